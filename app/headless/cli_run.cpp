@@ -1,0 +1,179 @@
+#include "cli_run.h"
+
+#include <omp.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+#include "exit_codes.h"
+#include "run_output.h"
+#include "sph/config.h"
+#include "sph/world.h"
+#ifdef SPH_HAVE_FRAMES
+#include "frame_recorder.h"
+#include "progress.h"
+#endif
+
+namespace sph::cli {
+namespace {
+
+sph::RunConfig resolve(const RunOptions& opt) {
+  sph::RunConfig cfg = sph::RunConfig::load(opt.scene);
+  for (const auto& kv : opt.sets) {
+    const auto eq = kv.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw ConfigError("--set " + kv + ": expected key=value");
+    cfg.set(kv.substr(0, eq), kv.substr(eq + 1), "--set " + kv);
+  }
+  if (opt.until >= 0.0) cfg.params.t_end = opt.until;
+  return cfg;
+}
+
+#ifdef SPH_HAVE_FRAMES
+std::unique_ptr<FrameRecorder> make_recorder(const RunOptions& opt) {
+  if (opt.frames.empty()) return nullptr;
+  FrameOptions fo;
+  fo.dir = opt.frames;
+  fo.every = opt.every;
+  if (!(opt.every > 0.0)) throw ConfigError("--every must be > 0");
+  int w = 0, h = 0;
+  char x = 0;
+  if (std::sscanf(opt.size.c_str(), "%d%c%d", &w, &x, &h) != 3 || x != 'x' || w <= 0 || h <= 0)
+    throw ConfigError("--size " + opt.size + ": expected WIDTHxHEIGHT, e.g. 1280x720");
+  fo.width = w;
+  fo.height = h;
+  fo.color_by = opt.color_by;
+  fo.cmap = opt.cmap;
+  if (opt.range != "auto") {
+    float lo = 0, hi = 0;
+    char c = 0;
+    if (std::sscanf(opt.range.c_str(), "%f%c%f", &lo, &c, &hi) != 3 || c != ':' || !(hi > lo))
+      throw ConfigError("--range " + opt.range + ": expected auto or MIN:MAX with MIN < MAX");
+    fo.auto_range = false;
+    fo.range_min = lo;
+    fo.range_max = hi;
+  }
+  fo.video = opt.video;
+  std::string err;
+  auto rec = FrameRecorder::create(fo, &err);
+  if (!rec) throw ConfigError(err);
+  return rec;
+}
+#endif
+
+}  // namespace
+
+int list_command() {
+  for (const auto& s : scene_registry()) std::printf("%-24s %dD  %s\n", s.name.c_str(), s.dim, s.description.c_str());
+  return kOk;
+}
+
+int check_command(const RunOptions& opt) {
+  try {
+    const sph::RunConfig cfg = resolve(opt);
+    std::printf("%s: valid (scene %s)\n", opt.scene.c_str(), cfg.scene->name.c_str());
+    return kOk;
+  } catch (const ConfigError& e) {
+    std::fprintf(stderr, "sph: invalid scene: %s\n", e.what());
+    return kInvalidScene;
+  }
+}
+
+int run_command(const RunOptions& opt) {
+  sph::RunConfig cfg;
+  try {
+    cfg = resolve(opt);
+  } catch (const ConfigError& e) {
+    std::fprintf(stderr, "sph: invalid scene: %s\n", e.what());
+    return kInvalidScene;
+  }
+  if (opt.threads > 0) omp_set_num_threads(opt.threads);
+  const double t_end = cfg.params.t_end;
+  try {
+#ifdef SPH_HAVE_FRAMES
+    std::unique_ptr<FrameRecorder> rec;
+    try {
+      rec = make_recorder(opt);  // validates the frame flags before anything is written
+    } catch (const ConfigError& e) {
+      std::fprintf(stderr, "sph: %s\n", e.what());
+      return kUsage;
+    }
+#else
+    if (!opt.frames.empty()) {
+      std::fprintf(stderr, "sph: --frames: this build has no OSMesa renderer\n");
+      return kUsage;
+    }
+#endif
+    const auto t0 = std::chrono::steady_clock::now();
+    World world(cfg);
+    std::unique_ptr<RunOutput> out;
+    if (!opt.out.empty()) out = std::make_unique<RunOutput>(opt.out, world);
+    const double dt_out = cfg.params.dt_out > 0.0 ? cfg.params.dt_out : t_end;
+    int next_out = 1;
+    if (out) { out->write_diagnostics(world); out->write_particles(world); }
+#ifdef SPH_HAVE_FRAMES
+    int next_frame = 1;
+    std::string err;
+    if (rec && !rec->write_frame(world.snapshot(), &err)) throw IoError(err);
+    Progress progress(t_end);
+#endif
+    auto reached = [&](double t) { return world.time() >= t * (1.0 - 1e-12); };
+    while (world.time() < t_end) {
+      double target = std::min(t_end, next_out * dt_out);
+#ifdef SPH_HAVE_FRAMES
+      if (rec) target = std::min(target, next_frame * opt.every);
+#endif
+      world.step(target - world.time());
+      if (out) out->write_diagnostics(world);
+      if (reached(next_out * dt_out) || world.time() >= t_end) {
+        if (out) out->write_particles(world);
+        while (reached(next_out * dt_out)) ++next_out;
+      }
+#ifdef SPH_HAVE_FRAMES
+      if (rec && reached(next_frame * opt.every)) {
+        if (!rec->write_frame(world.snapshot(), &err)) throw IoError(err);
+        while (reached(next_frame * opt.every)) ++next_frame;
+      }
+      progress.update(world.time());
+#endif
+    }
+#ifdef SPH_HAVE_FRAMES
+    progress.finish();
+#endif
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (!opt.quiet) {
+      const double psteps = static_cast<double>(world.steps()) * static_cast<double>(world.particles().size());
+      std::printf("%s: t = %g after %lld steps, %zu particles, %.3f s wall, %.3g particle-steps/s, %d threads\n",
+                  cfg.scene->name.c_str(), world.time(), static_cast<long long>(world.steps()),
+                  world.particles().size(), wall, psteps / wall, omp_get_max_threads());
+      if (world.has_reference()) {
+        const ErrorNorms e = world.errors();
+        std::printf("errors at t = %g (L1 = mean |f - f_exact| over %zu particles): L1(rho) = %.4e  L1(v) = %.4e  "
+                    "L1(p) = %.4e  L1(u) = %.4e\n",
+                    e.t, e.count, e.L1_rho, e.L1_v, e.L1_p, e.L1_u);
+      }
+    }
+#ifdef SPH_HAVE_FRAMES
+    if (rec) {
+      std::printf("%d frames in %s; make a video with:\n  %s\n", rec->frames_written(), opt.frames.c_str(),
+                  rec->ffmpeg_command().c_str());
+      if (!opt.video.empty() && !rec->make_video(&err)) {
+        std::fprintf(stderr, "sph: --video: %s\n", err.c_str());
+        return kIoError;
+      }
+    }
+#endif
+  } catch (const DivergedError& e) {
+    std::fprintf(stderr, "sph: %s; the state was not written\n", e.what());
+    return kDiverged;
+  } catch (const IoError& e) {
+    std::fprintf(stderr, "sph: I/O error: %s\n", e.what());
+    return kIoError;
+  }
+  return kOk;
+}
+
+}  // namespace sph::cli

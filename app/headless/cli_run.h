@@ -1,0 +1,29 @@
+// `sph run` and `sph check`.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace sph::cli {
+
+struct RunOptions {
+  std::string scene;               ///< built-in name or JSON file
+  std::vector<std::string> sets;   ///< key=value overrides, applied in order after the file
+  double until = -1.0;             ///< end time override (< 0: the scene's t_end)
+  std::string out;                 ///< output directory ("" = no files)
+  int threads = 0;                 ///< OpenMP threads (0 = default)
+  bool quiet = false;
+  // frames (OSMesa build only)
+  std::string frames;              ///< frame directory ("" = no frames)
+  double every = 0.1;              ///< simulated time between frames
+  std::string size = "1280x720";
+  std::string color_by = "rho";
+  std::string cmap = "viridis";
+  std::string range = "auto";
+  std::string video;
+};
+
+int run_command(const RunOptions& opt);
+int check_command(const RunOptions& opt);
+int list_command();
+
+}  // namespace sph::cli

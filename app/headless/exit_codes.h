@@ -1,0 +1,15 @@
+// Exit codes of the sph program (documented in README.md and `sph --help`).
+#pragma once
+
+namespace sph::cli {
+
+enum ExitCode : int {
+  kOk = 0,            ///< success
+  kInternal = 1,      ///< unexpected internal error
+  kUsage = 2,         ///< bad command line (unknown flag, malformed value)
+  kInvalidScene = 3,  ///< unknown scene, malformed scene file, unknown key or value out of range
+  kIoError = 4,       ///< cannot create or write the output
+  kDiverged = 5,      ///< NaN/inf in the state: the run stopped, nothing of the bad state was written
+};
+
+}  // namespace sph::cli

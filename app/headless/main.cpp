@@ -1,0 +1,50 @@
+// sph: the headless program. `sph list`, `sph check SCENE`, `sph run SCENE [...]`.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+
+#include "cli_run.h"
+#include "exit_codes.h"
+
+int main(int argc, char** argv) {
+  using namespace sph::cli;
+  CLI::App app{"sph: SPH sandbox, headless runs.\n"
+               "Exit codes: 0 ok, 1 internal error, 2 usage error, 3 invalid scene (unknown scene, malformed\n"
+               "file, unknown key, value out of range), 4 I/O error, 5 diverged (NaN/inf in the state)."};
+  app.require_subcommand(1);
+  RunOptions opt;
+  app.add_subcommand("list", "list the built-in scenes");
+  auto* check = app.add_subcommand("check", "validate a scene name or JSON file and its overrides");
+  auto* run = app.add_subcommand("run", "run a scene and write its output");
+  for (auto* sub : {check, run}) {
+    sub->add_option("scene", opt.scene, "built-in scene name or JSON scene file")->required();
+    sub->add_option("--set", opt.sets, "override a parameter: key=value (repeatable; see scene.json for keys)");
+    sub->add_option("--until", opt.until, "end time (overrides t_end)");
+  }
+  run->add_option("--out", opt.out, "output directory: scene.json, diagnostics.csv, particles_*.csv, errors.csv");
+  run->add_option("--threads", opt.threads, "OpenMP threads")->check(CLI::Range(1, 1024));
+  run->add_flag("--quiet", opt.quiet, "no summary line");
+  run->add_option("--frames", opt.frames, "write PNG frames into this directory");
+  run->add_option("--every", opt.every, "simulated time between frames");
+  run->add_option("--size", opt.size, "frame size WIDTHxHEIGHT (even numbers)");
+  run->add_option("--color-by", opt.color_by, "field to colour by (rho, p, u, speed, h, ...)");
+  run->add_option("--cmap", opt.cmap, "colour map: viridis, magma, cividis, coolwarm");
+  run->add_option("--range", opt.range, "colour range: auto or MIN:MAX");
+  run->add_option("--video", opt.video, "also make this .mp4 with ffmpeg");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return kUsage;
+  }
+  try {
+    if (app.got_subcommand("list")) return list_command();
+    if (app.got_subcommand("check")) return check_command(opt);
+    return run_command(opt);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "sph: internal error: %s\n", e.what());
+    return kInternal;
+  }
+}

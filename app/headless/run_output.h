@@ -1,0 +1,28 @@
+// The files of `sph run --out DIR`: scene.json, diagnostics.csv, particles_NNNNN.csv, errors.csv.
+#pragma once
+#include <fstream>
+#include <string>
+
+#include "sph/world.h"
+
+namespace sph::cli {
+
+struct IoError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+class RunOutput {
+ public:
+  /// Creates DIR (and parents) and writes scene.json; throws IoError naming the path.
+  RunOutput(const std::string& dir, const World& world);
+  void write_diagnostics(const World& world);  ///< one row of diagnostics.csv
+  void write_particles(const World& world);    ///< the next particles_NNNNN.csv (+ a row of errors.csv)
+  int particle_files() const { return files_; }
+
+ private:
+  std::string dir_;
+  std::ofstream diag_, errors_;
+  int files_ = 0;
+};
+
+}  // namespace sph::cli

@@ -1,0 +1,37 @@
+// A resolved run configuration: a scene, its run parameters and its own parameters, built from a
+// scene name or a JSON scene file plus --set overrides. Invalid input throws ConfigError naming the
+// file and key; nothing has been written at that point.
+#pragma once
+#include <stdexcept>
+#include <string>
+
+#include "sph/params.h"
+#include "sph/scene.h"
+
+namespace sph {
+
+struct ConfigError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct RunConfig {
+  const SceneSpec* scene = nullptr;
+  Params params;
+  SceneValues values;
+
+  /// Defaults of a built-in scene.
+  static RunConfig from_scene(const std::string& name);
+  /// A JSON file {"scene": NAME, "params": {key: value, ...}} (keys as in set()).
+  static RunConfig from_file(const std::string& path);
+  /// A built-in name or, if it ends in .json or names an existing file, a scene file.
+  static RunConfig load(const std::string& name_or_file);
+
+  /// Override one parameter: a run parameter key (param_table) or "scene.<name>". `origin` names the
+  /// file or flag in error messages.
+  void set(const std::string& key, const std::string& value, const std::string& origin);
+
+  /// Every parameter as resolved (defaults included), as JSON text.
+  std::string to_json() const;
+};
+
+}  // namespace sph

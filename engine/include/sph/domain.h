@@ -1,0 +1,32 @@
+// The simulation box and its boundaries. Periodic boundaries (seed 000 §4.1.1) and reflecting walls with
+// fictitious mirror particles (seed 000 §4.2.1) are both realised by ghost particles appended after the
+// real ones, so the neighbour search and the physics loops never special-case a boundary.
+#pragma once
+#include <array>
+
+#include "sph/particles.h"
+
+namespace sph {
+
+enum class Boundary { Open, Periodic, Wall };
+
+struct Domain {
+  std::array<double, 3> lo{0, 0, 0};  ///< lower corner [length]
+  std::array<double, 3> hi{1, 1, 1};  ///< upper corner [length]
+  std::array<Boundary, 3> bc{Boundary::Open, Boundary::Open, Boundary::Open};  ///< per axis, both sides
+  double length(int k) const { return hi[k] - lo[k]; }
+};
+
+/// Rebuild the ghost particles for every real particle within `margin` of a periodic or wall boundary
+/// (corners included). Sets positions, ids, ghost_src and ghost_flip; scalar state is copied by
+/// copy_ghost_state. Deterministic: ghosts are appended axis by axis in particle order.
+void make_ghosts(const Domain& d, double margin, Particles& p);
+
+/// Copy velocity (mirrored across walls) and the listed scalar fields from each ghost's source.
+void copy_ghost_velocity(Particles& p);
+void copy_ghost_field(Particles& p, Field f);
+
+/// Wrap real particles into periodic axes and reflect those that crossed a wall (specular bounce).
+void apply_boundaries(const Domain& d, Particles& p);
+
+}  // namespace sph

@@ -1,0 +1,45 @@
+// Smoothing kernels W(r, h) = sigma_d w(q) / h^d, q = r/h (seed 000 eqs. 3.2.6–3.2.11).
+// A Kernel is a small value chosen at runtime; evaluation is branch-light and inlined per family.
+#pragma once
+#include "sph/params.h"
+
+namespace sph {
+
+class Kernel {
+ public:
+  Kernel(KernelType type, int dim);
+
+  KernelType type() const { return type_; }
+  int dim() const { return dim_; }
+  /// Support radius in units of h: W = 0 for q >= support().
+  double support() const { return support_; }
+  /// Normalisation sigma_d so that the integral of W over R^d is 1.
+  double sigma() const { return sigma_; }
+  /// The default eta of h = eta (m/rho)^(1/d) for this kernel: chosen so that every kernel has the
+  /// same standard deviation in units of the particle spacing as M4 with eta = 1.2 (Price 2012,
+  /// JCP 231, 759, sec. 2.1.6; the B-spline M_n with unit knot spacing has variance n/12).
+  double default_eta() const;
+
+  /// Dimensionless shape w(q) (without sigma).
+  double w(double q) const;
+  /// dw/dq (without sigma).
+  double dw(double q) const;
+
+  /// W(r, h) [1/length^d].
+  double W(double r, double h) const;
+  /// dW/dr (r, h) [1/length^(d+1)]; the gradient is (r_vec/r) dW/dr.
+  double dWdr(double r, double h) const;
+  /// dW/dh (r, h) = -(d W + r dW/dr)/h (used by the Omega term, seed 000 eq. 3.3.2).
+  double dWdh(double r, double h) const;
+
+ private:
+  KernelType type_;
+  int dim_;
+  double support_ = 2.0;
+  double sigma_ = 1.0;
+};
+
+/// Expected neighbour count within the support for a uniform lattice: V_d (support eta)^d.
+double expected_neighbours(const Kernel& k, double eta);
+
+}  // namespace sph

@@ -1,0 +1,31 @@
+// Neighbour search: particles sorted into cells (a counting sort, the array form of the head/next cell
+// linked list of seed 002 §3.2), then a gather per particle in a fixed order, so lists are identical for
+// any thread count.
+#pragma once
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "sph/particles.h"
+
+namespace sph {
+
+/// Compressed neighbour lists of the real particles: neighbours of i are index[offset[i] .. offset[i+1]).
+/// Each list includes i itself and is in a deterministic order (cell by cell, index order inside a cell).
+struct NeighbourList {
+  std::vector<std::uint32_t> offset;
+  std::vector<std::uint32_t> index;
+  std::span<const std::uint32_t> of(std::size_t i) const {
+    return {index.data() + offset[i], index.data() + offset[i + 1]};
+  }
+  std::size_t pairs() const { return index.size(); }
+};
+
+/// All j (real or ghost) with |r_i - r_j| < radius * max(h_i, h_j), for every real i. `h` covers all
+/// particles (ghosts included).
+void build_neighbours(const Particles& p, const std::vector<double>& h, double radius, NeighbourList& out);
+
+/// Same result by brute force, O(N^2): the reference the tests compare against.
+void build_neighbours_brute(const Particles& p, const std::vector<double>& h, double radius, NeighbourList& out);
+
+}  // namespace sph

@@ -1,0 +1,53 @@
+// A copy of what a viewer needs from the engine: the renderer reads this, never engine internals.
+// Floats (the renderer's precision); the engine stays double precision.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace sph {
+
+/// One scalar field per particle, with its range over the particles.
+struct SnapshotField {
+  std::string name;           ///< key used by --color-by and the GUI ("rho", "p", "u", "speed", "h", ...)
+  std::string label;          ///< human label with unit, e.g. "density rho"
+  std::vector<float> values;  ///< one value per particle
+  float min = 0.f, max = 0.f; ///< range over the particles (finite values only)
+};
+
+/// An exact or reference solution sampled on a line (1D scenes): value(x) for one field.
+struct ExactCurve {
+  std::string field;        ///< same key as SnapshotField::name
+  std::vector<float> x;     ///< abscissae, increasing
+  std::vector<float> value; ///< reference value at x
+};
+
+struct Snapshot {
+  std::string scene;           ///< scene name
+  int dim = 2;                 ///< 1, 2 or 3
+  std::int64_t step = 0;       ///< engine step number
+  double t = 0.0;              ///< simulated time
+  double dt = 0.0;             ///< last timestep
+  std::size_t count = 0;       ///< number of (real) particles; every array below has this length
+  std::vector<float> x, y, z;  ///< positions (y, z are 0 below their dimension)
+  std::vector<float> h;        ///< smoothing length (disc radius in 2D views)
+  std::vector<SnapshotField> fields;  ///< the active display fields
+  std::vector<ExactCurve> exact;      ///< reference curves (1D scenes with an exact solution)
+  std::array<float, 6> bounds{0, 1, 0, 1, 0, 1};  ///< domain box xmin,xmax,ymin,ymax,zmin,zmax
+
+  /// The field with this name, or nullptr.
+  const SnapshotField* find(std::string_view name) const {
+    for (const auto& f : fields)
+      if (f.name == name) return &f;
+    return nullptr;
+  }
+  const ExactCurve* find_exact(std::string_view name) const {
+    for (const auto& c : exact)
+      if (c.field == name) return &c;
+    return nullptr;
+  }
+};
+
+}  // namespace sph

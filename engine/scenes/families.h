@@ -1,0 +1,14 @@
+// Scene families of the built-in table (one function per scene).
+#pragma once
+#include "sph/scene.h"
+
+namespace sph::scenes {
+
+SceneSpec sod_scene();
+SceneSpec castellanos_scene();
+SceneSpec box_lattice_scene();
+SceneSpec box_perturbed_scene();
+SceneSpec box_random_scene();
+SceneSpec tube2d_scene();
+
+}  // namespace sph::scenes

@@ -1,0 +1,107 @@
+// Seed 000 §4.1: gas in the periodic box [0,1]^2 (m = 0.1, v = 0, u = 0.05): a uniform lattice
+// (§4.1.2), the lattice with one displaced particle (§4.1.3) and random particles (§4.1.4).
+// Seed 000's equations (3.3.29) have no artificial viscosity, so these scenes turn it off.
+#include <cmath>
+
+#include "families.h"
+#include "scene_util.h"
+
+namespace sph::scenes {
+namespace {
+
+SceneSpec box_base() {
+  SceneSpec s;
+  s.category = "gas dynamics / periodic box (seed 000 §4.1)";
+  s.dim = 2;
+  s.modules.viscosity = false;
+  s.defaults.t_end = 30.0;
+  s.defaults.dt_out = 1.0;
+  return s;
+}
+
+SceneSetup periodic_domain(Particles p) {
+  SceneSetup s{std::move(p), {}};
+  s.domain.lo = {0, 0, 0};
+  s.domain.hi = {1, 1, 1};
+  s.domain.bc = {Boundary::Periodic, Boundary::Periodic, Boundary::Open};
+  return s;
+}
+
+/// n x n lattice at cell centres, mass m, u = u0; h guess from the lattice density.
+SceneSetup lattice(const SceneSpec& spec, const Params& prm, const SceneValues& v) {
+  const auto n = static_cast<std::size_t>(v.at("n_side"));
+  Particles p = make_particles(spec, n * n);
+  const double dx = 1.0 / static_cast<double>(n), eta = effective_eta(prm, 2);
+  for (std::size_t j = 0; j < n; ++j)
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t k = j * n + i;
+      p.x[0][k] = (i + 0.5) * dx;
+      p.x[1][k] = (j + 0.5) * dx;
+      p[Field::Mass][k] = v.at("mass");
+      p[Field::H][k] = eta * dx;
+      p[Field::Energy][k] = v.at("u0");
+    }
+  return periodic_domain(std::move(p));
+}
+
+std::vector<SceneParam> lattice_params(double n_side) {
+  return {{"n_side", n_side, 2, 2000, true, "particles per side of the lattice"},
+          {"mass", 0.1, 1e-12, 1e12, false, "particle mass (seed 000: 0.1)"},
+          {"u0", 0.05, 1e-12, 1e12, false, "initial specific internal energy (seed 000: 0.05)"}};
+}
+
+}  // namespace
+
+SceneSpec box_lattice_scene() {
+  SceneSpec s = box_base();
+  s.name = "box_lattice";
+  s.description = "seed 000 §4.1.2: 10x10 lattice at rest in a periodic box; stays at rest (|v| ~ round-off)";
+  s.params = lattice_params(10);
+  s.build = [s](const Params& p, const SceneValues& v) { return lattice(s, p, v); };
+  return s;
+}
+
+SceneSpec box_perturbed_scene() {
+  SceneSpec s = box_base();
+  s.name = "box_perturbed";
+  s.description = "seed 000 §4.1.3: the lattice with one particle displaced; disorder spreads (t ~ 12)";
+  s.params = lattice_params(10);
+  s.params.push_back({"shift", 0.2, -0.49, 0.49, false, "displacement of the centre particle, in lattice spacings"});
+  s.build = [s](const Params& p, const SceneValues& v) {
+    SceneSetup out = lattice(s, p, v);
+    const auto n = static_cast<std::size_t>(v.at("n_side"));
+    const std::size_t k = (n / 2) * n + n / 2;
+    out.particles.x[0][k] += v.at("shift") / static_cast<double>(n);
+    out.particles.x[1][k] += 0.5 * v.at("shift") / static_cast<double>(n);
+    return out;
+  };
+  return s;
+}
+
+SceneSpec box_random_scene() {
+  SceneSpec s = box_base();
+  s.name = "box_random";
+  s.description = "seed 000 §4.1.4: 500 random particles in a periodic box, quintic kernel; relaxes";
+  s.defaults.kernel = KernelType::M6;
+  s.params = {{"count", 500, 2, 1e7, true, "number of particles"},
+              {"mass", 0.1, 1e-12, 1e12, false, "particle mass"},
+              {"u0", 0.05, 1e-12, 1e12, false, "initial specific internal energy"},
+              {"seed", 2017, 0, 1e15, true, "random seed (same seed, same particles on every platform)"}};
+  s.build = [s](const Params& prm, const SceneValues& v) {
+    const auto n = static_cast<std::size_t>(v.at("count"));
+    Particles p = make_particles(s, n);
+    Random rng(static_cast<std::uint64_t>(v.at("seed")));
+    const double h = effective_eta(prm, 2) / std::sqrt(static_cast<double>(n));
+    for (std::size_t k = 0; k < n; ++k) {
+      p.x[0][k] = rng.uniform();
+      p.x[1][k] = rng.uniform();
+      p[Field::Mass][k] = v.at("mass");
+      p[Field::H][k] = h;
+      p[Field::Energy][k] = v.at("u0");
+    }
+    return periodic_domain(std::move(p));
+  };
+  return s;
+}
+
+}  // namespace sph::scenes

@@ -1,0 +1,20 @@
+// The explicit table of built-in scenes (static self-registration breaks inside static libraries).
+#include "families.h"
+
+namespace sph {
+
+const std::vector<SceneSpec>& scene_registry() {
+  static const std::vector<SceneSpec> table = {
+      scenes::sod_scene(),         scenes::castellanos_scene(), scenes::box_lattice_scene(),
+      scenes::box_perturbed_scene(), scenes::box_random_scene(), scenes::tube2d_scene(),
+  };
+  return table;
+}
+
+const SceneSpec* find_scene(std::string_view name) {
+  for (const auto& s : scene_registry())
+    if (s.name == name) return &s;
+  return nullptr;
+}
+
+}  // namespace sph

@@ -1,0 +1,37 @@
+// Helpers shared by the scene builders.
+#pragma once
+#include <cmath>
+#include <cstdint>
+
+#include "sph/scene.h"
+
+namespace sph::scenes {
+
+/// Portable uniform random numbers in [0,1) from a 64-bit seed (splitmix64; same on every platform,
+/// unlike std::uniform_real_distribution).
+class Random {
+ public:
+  explicit Random(std::uint64_t seed) : s_(seed) {}
+  double uniform() {
+    std::uint64_t z = (s_ += 0x9e3779b97f4a7c15ull);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    z ^= z >> 31;
+    return static_cast<double>(z >> 11) * 0x1.0p-53;
+  }
+
+ private:
+  std::uint64_t s_;
+};
+
+/// Particles with the fields of the scene's modules, mass m each and a smoothing-length guess
+/// h = eta (m/rho)^(1/d) from the expected density rho.
+Particles make_particles(const SceneSpec& spec, std::size_t n);
+
+/// Effective eta for a scene's params (kernel default if eta == 0).
+double effective_eta(const Params& prm, int dim);
+
+/// Sets u from pressure for an ideal gas: u = P / ((gamma - 1) rho).
+inline double energy_from_pressure(double P, double rho, double gamma) { return P / ((gamma - 1.0) * rho); }
+
+}  // namespace sph::scenes

@@ -1,0 +1,48 @@
+// Text rows of diagnostics.csv and errors.csv (full double precision).
+#include <cstdio>
+
+#include "sph/diagnostics.h"
+
+namespace sph {
+namespace {
+
+std::string fmt(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.12g", v);
+  return buf;
+}
+
+/// Appends ",value" (written out to avoid a GCC 12 -Wrestrict false positive on "," + string).
+void field(std::string& s, const std::string& v) {
+  s.push_back(',');
+  s.append(v);
+}
+
+}  // namespace
+
+std::string diagnostics_csv_header() {
+  return "step,t,dt,E_kin,E_int,E_pot,E_tot,px,py,pz,Lx,Ly,Lz,v_max,h_iter_mean,h_iter_max,h_not_converged,"
+         "neighbours_mean";
+}
+
+std::string diagnostics_csv_row(const Diagnostics& d) {
+  std::string s = std::to_string(d.step);
+  for (double v : {d.t, d.dt, d.E_kin, d.E_int, d.E_pot, d.E_tot, d.P[0], d.P[1], d.P[2], d.L[0], d.L[1], d.L[2],
+                   d.v_max, d.h_iter_mean})
+    field(s, fmt(v));
+  field(s, std::to_string(d.h_iter_max));
+  field(s, std::to_string(d.h_not_converged));
+  field(s, fmt(d.neighbours_mean));
+  return s;
+}
+
+std::string errors_csv_header() { return "t,count,L1_rho,L1_v,L1_p,L1_u,Linf_rho"; }
+
+std::string errors_csv_row(const ErrorNorms& e) {
+  std::string s = fmt(e.t);
+  field(s, std::to_string(e.count));
+  for (double v : {e.L1_rho, e.L1_v, e.L1_p, e.L1_u, e.Linf_rho}) field(s, fmt(v));
+  return s;
+}
+
+}  // namespace sph

@@ -1,0 +1,21 @@
+// Explicit (forward) Euler: first order, for teaching; x uses the old velocity.
+#include "phase_ops.h"
+
+namespace sph {
+
+class EulerIntegrator final : public Integrator {
+ public:
+  bool step(PhaseSpace& s, const Evaluate& eval, double dt, bool current) override {
+    if (!current) eval();
+    for (int k = 0; k < s.dim; ++k) {
+      detail::axpy(*s.x[k], *s.x[k], dt, *s.v[k], s.n);
+      detail::axpy(*s.v[k], *s.v[k], dt, *s.a[k], s.n);
+    }
+    if (s.u) detail::axpy(*s.u, *s.u, dt, *s.dudt, s.n);
+    return false;
+  }
+};
+
+std::unique_ptr<Integrator> make_euler() { return std::make_unique<EulerIntegrator>(); }
+
+}  // namespace sph

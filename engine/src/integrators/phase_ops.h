@@ -1,0 +1,30 @@
+// Small helpers shared by the integrators: y = x + c z over the phase-space arrays.
+#pragma once
+#include <vector>
+
+#include "sph/integrator.h"
+
+namespace sph::detail {
+
+/// Copy of the evolved arrays.
+struct Saved {
+  std::array<std::vector<double>, 3> x, v;
+  std::vector<double> u;
+};
+
+inline void save(const PhaseSpace& s, Saved& out) {
+  for (int k = 0; k < s.dim; ++k) {
+    out.x[k].assign(s.x[k]->begin(), s.x[k]->begin() + s.n);
+    out.v[k].assign(s.v[k]->begin(), s.v[k]->begin() + s.n);
+  }
+  if (s.u) out.u.assign(s.u->begin(), s.u->begin() + s.n);
+}
+
+/// dst[i] = base[i] + c * rate[i] for i < n.
+inline void axpy(std::vector<double>& dst, const std::vector<double>& base, double c, const std::vector<double>& rate,
+                 std::size_t n) {
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) dst[i] = base[i] + c * rate[i];
+}
+
+}  // namespace sph::detail

@@ -1,0 +1,115 @@
+// Scene files and overrides: validated completely before a run writes anything.
+#include "sph/config.h"
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "sph/param_table.h"
+
+namespace sph {
+
+RunConfig RunConfig::from_scene(const std::string& name) {
+  const SceneSpec* s = find_scene(name);
+  if (!s) {
+    std::string known;
+    for (const auto& sc : scene_registry()) known += " " + sc.name;
+    throw ConfigError("unknown scene '" + name + "' (built-in scenes:" + known + ")");
+  }
+  RunConfig c;
+  c.scene = s;
+  c.params = s->defaults;
+  c.values = s->default_values();
+  return c;
+}
+
+RunConfig RunConfig::from_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw ConfigError(path + ": cannot open scene file");
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw ConfigError(path + ": malformed JSON: " + e.what());
+  }
+  if (!j.is_object()) throw ConfigError(path + ": the top level must be an object");
+  for (const auto& [key, _] : j.items())
+    if (key != "scene" && key != "params" && key != "description")
+      throw ConfigError(path + ": unknown key '" + key + "' (expected scene, params, description)");
+  if (!j.contains("scene") || !j["scene"].is_string()) throw ConfigError(path + ": key 'scene' must name a built-in scene");
+  RunConfig c;
+  try {
+    c = from_scene(j["scene"].get<std::string>());
+  } catch (const ConfigError& e) {
+    throw ConfigError(path + ": key 'scene': " + e.what());
+  }
+  if (j.contains("params")) {
+    if (!j["params"].is_object()) throw ConfigError(path + ": key 'params' must be an object");
+    for (const auto& [key, value] : j["params"].items()) {
+      std::string text;
+      if (value.is_string()) text = value.get<std::string>();
+      else if (value.is_number()) {
+        std::ostringstream os;
+        os.precision(17);
+        os << value.get<double>();
+        text = os.str();
+      } else throw ConfigError(path + ": key 'params." + key + "' must be a number or a string");
+      c.set(key, text, path);
+    }
+  }
+  return c;
+}
+
+RunConfig RunConfig::load(const std::string& name_or_file) {
+  const bool looks_like_file = name_or_file.ends_with(".json") || name_or_file.find('/') != std::string::npos;
+  if (looks_like_file || (!find_scene(name_or_file) && std::filesystem::exists(name_or_file)))
+    return from_file(name_or_file);
+  return from_scene(name_or_file);
+}
+
+void RunConfig::set(const std::string& key, const std::string& value, const std::string& origin) {
+  if (key.starts_with("scene.")) {
+    const std::string name = key.substr(6);
+    for (const auto& sp : scene->params) {
+      if (sp.name != name) continue;
+      double v = 0.0;
+      if (!parse_number(value, v)) throw ConfigError(origin + ": key '" + key + "': '" + value + "' is not a number");
+      if (sp.integer && v != static_cast<double>(static_cast<long long>(v)))
+        throw ConfigError(origin + ": key '" + key + "': '" + value + "' is not an integer");
+      if (v < sp.min || v > sp.max)
+        throw ConfigError(origin + ": key '" + key + "' = " + value + " is out of range [" + std::to_string(sp.min) +
+                          ", " + std::to_string(sp.max) + "]");
+      values[name] = v;
+      return;
+    }
+    std::string known;
+    for (const auto& sp : scene->params) known += " scene." + sp.name;
+    throw ConfigError(origin + ": unknown key '" + key + "' for scene " + scene->name + " (its keys:" + known + ")");
+  }
+  const ParamInfo* info = find_param(key);
+  if (!info) {
+    std::string known;
+    for (const auto& p : param_table()) known += " " + std::string(p.key);
+    throw ConfigError(origin + ": unknown key '" + key + "' (run parameters:" + known + "; scene keys: scene.NAME)");
+  }
+  std::string err;
+  if (!info->set(params, value, err)) throw ConfigError(origin + ": key '" + key + "': " + err);
+}
+
+std::string RunConfig::to_json() const {
+  nlohmann::ordered_json j;
+  j["scene"] = scene->name;
+  nlohmann::ordered_json p = nlohmann::ordered_json::object();
+  for (const auto& info : param_table()) {
+    const std::string v = info.get(params);
+    double d = 0.0;
+    if (info.choices.empty() && parse_number(v, d)) p[std::string(info.key)] = d;
+    else p[std::string(info.key)] = v;
+  }
+  for (const auto& sp : scene->params) p["scene." + sp.name] = values.at(sp.name);
+  j["params"] = p;
+  return j.dump(2) + "\n";
+}
+
+}  // namespace sph

@@ -1,0 +1,98 @@
+// Ghost particles for periodic boundaries (seed 000 §4.1.1) and mirror walls (seed 000 §4.2.1).
+#include <cmath>
+#include <vector>
+
+#include "sph/domain.h"
+
+namespace sph {
+namespace {
+
+struct Ghost {
+  std::array<double, 3> x;
+  std::uint32_t src;
+  std::uint8_t flip;
+};
+
+}  // namespace
+
+void make_ghosts(const Domain& d, double margin, Particles& p) {
+  const std::size_t n = p.size();
+  std::vector<Ghost> g;
+  // Each axis sees the real particles and the ghosts made for the previous axes (this fills corners).
+  auto visit = [&](std::size_t count, auto&& fn) {
+    for (std::size_t j = 0; j < count; ++j) {
+      if (j < n) fn(Ghost{{p.x[0][j], p.x[1][j], p.x[2][j]}, static_cast<std::uint32_t>(j), 0});
+      else fn(g[j - n]);
+    }
+  };
+  for (int k = 0; k < p.dim(); ++k) {
+    const std::size_t count = n + g.size();
+    const double lo = d.lo[k], hi = d.hi[k], L = hi - lo;
+    if (d.bc[k] == Boundary::Periodic) {
+      const int images = static_cast<int>(std::ceil(margin / L));
+      visit(count, [&](Ghost s) {
+        const double xk = s.x[k];
+        for (int m = 1; m <= images; ++m) {
+          if (xk + m * L < hi + margin) { Ghost c = s; c.x[k] = xk + m * L; g.push_back(c); }
+          if (xk - m * L > lo - margin) { Ghost c = s; c.x[k] = xk - m * L; g.push_back(c); }
+        }
+      });
+    } else if (d.bc[k] == Boundary::Wall) {
+      const std::uint8_t bit = static_cast<std::uint8_t>(1u << k);
+      visit(count, [&](Ghost s) {
+        const double xk = s.x[k];
+        if (xk - lo < margin) { Ghost c = s; c.x[k] = 2.0 * lo - xk; c.flip ^= bit; g.push_back(c); }
+        if (hi - xk < margin) { Ghost c = s; c.x[k] = 2.0 * hi - xk; c.flip ^= bit; g.push_back(c); }
+      });
+    }
+  }
+  p.resize_total(n + g.size());
+  for (std::size_t i = 0; i < g.size(); ++i) {
+    for (int k = 0; k < 3; ++k) p.x[k][n + i] = g[i].x[k];
+    p.ghost_src[i] = g[i].src;
+    p.ghost_flip[i] = g[i].flip;
+    p.id[n + i] = p.id[g[i].src];
+  }
+}
+
+void copy_ghost_velocity(Particles& p) {
+  const std::size_t n = p.size();
+  for (std::size_t i = 0; i < p.ghost_src.size(); ++i) {
+    const std::uint32_t s = p.ghost_src[i];
+    for (int k = 0; k < 3; ++k) {
+      const double sign = (p.ghost_flip[i] >> k) & 1u ? -1.0 : 1.0;
+      p.v[k][n + i] = sign * p.v[k][s];
+    }
+  }
+}
+
+void copy_ghost_field(Particles& p, Field f) {
+  auto& a = p[f];
+  const std::size_t n = p.size();
+  for (std::size_t i = 0; i < p.ghost_src.size(); ++i) a[n + i] = a[p.ghost_src[i]];
+}
+
+void apply_boundaries(const Domain& d, Particles& p) {
+  const std::size_t n = p.size();
+  for (int k = 0; k < p.dim(); ++k) {
+    const double lo = d.lo[k], hi = d.hi[k], L = hi - lo;
+    auto& x = p.x[k];
+    auto& v = p.v[k];
+    if (d.bc[k] == Boundary::Periodic) {
+      for (std::size_t i = 0; i < n; ++i) {
+        if (x[i] < lo || x[i] >= hi) {
+          x[i] = lo + std::fmod(x[i] - lo, L);
+          if (x[i] < lo) x[i] += L;
+          if (x[i] >= hi) x[i] -= L;  // fmod rounding at the upper edge
+        }
+      }
+    } else if (d.bc[k] == Boundary::Wall) {
+      for (std::size_t i = 0; i < n; ++i) {
+        if (x[i] < lo) { x[i] = 2.0 * lo - x[i]; v[i] = -v[i]; }
+        else if (x[i] > hi) { x[i] = 2.0 * hi - x[i]; v[i] = -v[i]; }
+      }
+    }
+  }
+}
+
+}  // namespace sph

@@ -1,0 +1,39 @@
+// Names of the runtime choices (used by JSON files, --set and the GUI).
+#include "sph/params.h"
+
+namespace sph {
+namespace {
+
+template <class E, std::size_t N>
+bool parse_enum(const std::string& s, E& out, const std::pair<const char*, E> (&table)[N]) {
+  for (const auto& [name, value] : table)
+    if (s == name) { out = value; return true; }
+  return false;
+}
+
+constexpr std::pair<const char*, KernelType> kKernels[] = {
+    {"M4", KernelType::M4}, {"M5", KernelType::M5}, {"M6", KernelType::M6},
+    {"gaussian", KernelType::Gaussian}, {"wendland_c2", KernelType::WendlandC2},
+    {"wendland_c4", KernelType::WendlandC4}};
+constexpr std::pair<const char*, IntegratorType> kIntegrators[] = {
+    {"euler", IntegratorType::Euler}, {"rk4", IntegratorType::RK4},
+    {"leapfrog", IntegratorType::Leapfrog}, {"predictor_corrector", IntegratorType::PredictorCorrector}};
+constexpr std::pair<const char*, HMode> kHModes[] = {{"variable", HMode::Variable}, {"fixed", HMode::Fixed}};
+
+template <class E, std::size_t N>
+const char* name_of(E e, const std::pair<const char*, E> (&table)[N]) {
+  for (const auto& [name, value] : table)
+    if (value == e) return name;
+  return "?";
+}
+
+}  // namespace
+
+const char* to_string(KernelType k) { return name_of(k, kKernels); }
+const char* to_string(IntegratorType i) { return name_of(i, kIntegrators); }
+const char* to_string(HMode m) { return name_of(m, kHModes); }
+bool parse(const std::string& s, KernelType& out) { return parse_enum(s, out, kKernels); }
+bool parse(const std::string& s, IntegratorType& out) { return parse_enum(s, out, kIntegrators); }
+bool parse(const std::string& s, HMode& out) { return parse_enum(s, out, kHModes); }
+
+}  // namespace sph

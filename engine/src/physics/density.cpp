@@ -1,0 +1,99 @@
+// Density and smoothing length by Newton-Raphson (seed 000 eq. 3.5.1, App. B) with bisection fallback.
+#include "sph/density.h"
+#include "sph/newton.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sph {
+namespace {
+
+struct Sums {
+  double rho = 0.0;   ///< sum_b m_b W(r_ab, h)
+  double drho = 0.0;  ///< sum_b m_b dW(r_ab, h)/dh
+  int neighbours = 0; ///< count of b with r_ab < support h
+};
+
+Sums density_sums(const Kernel& K, const Particles& p, std::size_t i, std::span<const std::uint32_t> nb,
+                  const std::vector<double>& m, double h) {
+  Sums s;
+  const double R2 = K.support() * K.support() * h * h;
+  for (std::uint32_t j : nb) {
+    const double dx = p.x[0][i] - p.x[0][j], dy = p.x[1][i] - p.x[1][j], dz = p.x[2][i] - p.x[2][j];
+    const double r2 = dx * dx + dy * dy + dz * dz;
+    if (r2 >= R2) continue;
+    const double r = std::sqrt(r2);
+    s.rho += m[j] * K.W(r, h);
+    s.drho += m[j] * K.dWdh(r, h);
+    ++s.neighbours;
+  }
+  return s;
+}
+
+}  // namespace
+
+bool solve_density(const Kernel& K, const Params& prm, double eta, Particles& p, const NeighbourList& nl,
+                   const std::vector<double>& h_limit, DensityStats& stats) {
+  const std::size_t n = p.size();
+  const int d = p.dim();
+  auto& m = p[Field::Mass];
+  auto& rho = p[Field::Density];
+  auto& h = p[Field::H];
+  auto& omega = p[Field::Omega];
+  auto& nneigh = p[Field::Neighbours];
+  auto& hiter = p[Field::HIterations];
+  const double eta_d = std::pow(eta, d);
+  const bool fixed = prm.h_mode == HMode::Fixed;
+  int overflow = 0;
+  std::size_t bisections = 0;
+
+#pragma omp parallel for schedule(dynamic, 64) reduction(+ : overflow, bisections)
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto nb = nl.of(i);
+    Sums s;
+    double hi = h[i];
+    int it = 0;
+    bool converged = true;
+    if (fixed) {
+      s = density_sums(K, p, i, nb, m, hi);
+    } else {
+      // g(h) = rho(h) - m eta^d / h^d  (seed 000 eq. 3.5.1); g' = drho/dh + d m eta^d / h^(d+1)
+      const NewtonResult r = newton_bracketed(
+          [&](double hh, double& g, double& dg) {
+            s = density_sums(K, p, i, nb, m, hh);
+            const double target = m[i] * eta_d / std::pow(hh, d);
+            g = s.rho - target;
+            dg = s.drho + d * target / hh;
+          },
+          hi, h_limit[i], prm.h_tol, prm.h_max_iter);
+      if (r.hit_upper) { ++overflow; h[i] = h_limit[i]; continue; }
+      bisections += static_cast<std::size_t>(r.bisections);
+      it = r.iterations;
+      converged = r.converged;
+      hi = r.x;  // s holds the sums evaluated at r.x (the last evaluation)
+    }
+    h[i] = hi;
+    rho[i] = s.rho;
+    // Omega = 1 - (dh/drho) sum m dW/dh with dh/drho = -h/(rho d)  (seed 000 eqs. 3.3.2, 3.3.4)
+    omega[i] = fixed ? 1.0 : 1.0 + hi / (d * s.rho) * s.drho;
+    nneigh[i] = s.neighbours;
+    hiter[i] = it + (converged ? 0.0 : 1000.0);  // > 1000 marks non-converged particles
+  }
+  if (overflow > 0) return false;
+
+  double sum_it = 0.0, sum_nb = 0.0;
+  stats = DensityStats{};
+  stats.bisections = bisections;
+  for (std::size_t i = 0; i < n; ++i) {
+    int it = static_cast<int>(hiter[i]);
+    if (it >= 1000) { ++stats.not_converged; it -= 1000; hiter[i] = it; }
+    sum_it += it;
+    stats.max_iterations = std::max(stats.max_iterations, it);
+    sum_nb += nneigh[i];
+  }
+  stats.mean_iterations = n ? sum_it / n : 0.0;
+  stats.mean_neighbours = n ? sum_nb / n : 0.0;
+  return true;
+}
+
+}  // namespace sph

@@ -1,0 +1,111 @@
+// The 1D shock tubes against the exact Riemann solution (seed 003 eqs. 3.20–3.51; Toro §4).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "sph/riemann.h"
+#include "test_util.h"
+
+namespace sph {
+namespace {
+
+struct Plateau {
+  double p, v;
+  std::size_t count;
+};
+
+/// Mean pressure and velocity over the star region at time t, between the rarefaction tail and the
+/// shock, leaving out `margin` at both ends and around the contact (where SPH smears the jump).
+Plateau star_plateau(const World& w, const RiemannSolver& rs, double t, double margin) {
+  const RiemannStar star = rs.star();
+  // tail of the rarefaction: u* - c*_L; shock: found by sampling the exact solution
+  const GasState L = rs.sample(-1e9, 0.0);
+  const double rho_starL = L.rho * std::pow(star.p / L.p, 1.0 / rs.gamma());
+  const double tail = (star.v - std::sqrt(rs.gamma() * star.p / rho_starL)) * t;
+  double shock = star.v * t;
+  while (rs.sample(shock, t).p > 0.5 * (star.p + rs.sample(1e9, 0.0).p)) shock += 1e-5;
+  const double contact = star.v * t;
+  Plateau out{0, 0, 0};
+  const Particles& p = w.particles();
+  const auto& P = p[Field::Pressure];
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double x = p.x[0][i];
+    if (x < tail + margin || x > shock - margin || std::abs(x - contact) < margin) continue;
+    out.p += P[i];
+    out.v += p.v[0][i];
+    ++out.count;
+  }
+  out.p /= out.count;
+  out.v /= out.count;
+  return out;
+}
+
+TEST(Sod, PlateauWithinOnePercentAndL1RhoBound) {
+  RunConfig cfg = RunConfig::from_scene("sod");
+  World w(cfg);
+  const double E0 = w.diagnostics().E_tot;
+  w.advance_to(0.2);
+  ASSERT_DOUBLE_EQ(w.time(), 0.2);
+  const RiemannSolver rs({1.0, 0.0, 1.0}, {0.125, 0.0, 0.1}, 1.4);
+  const Plateau pl = star_plateau(w, rs, 0.2, 0.02);
+  ASSERT_GT(pl.count, 30u);
+  // issue 2: plateaus within 1% of the exact p* = 0.30313, u* = 0.92745 (measured: 0.1% and 0.06%)
+  EXPECT_NEAR(pl.p / 0.30313, 1.0, 0.01);
+  EXPECT_NEAR(pl.v / 0.92745, 1.0, 0.01);
+  const ErrorNorms e = w.errors();
+  // L1(rho) <= 5e-3 at the default 400|50 particles (measured 3.6e-3): an M4 SPH shock is ~3 h wide and
+  // the contact ~4 h, so the error is dominated by those ~20 particles out of 450.
+  EXPECT_LT(e.L1_rho, 5e-3);
+  EXPECT_LT(e.L1_v, 1e-2);
+  EXPECT_LT(e.L1_p, 5e-3);
+  // Total energy with viscosity and conduction: the dissipative terms are antisymmetric, so only the
+  // time integration (leapfrog, cfl 0.3) and the h tolerance break it (measured 4e-6).
+  EXPECT_NEAR(w.diagnostics().E_tot / E0, 1.0, 2e-5);
+}
+
+TEST(Sod, ErrorFallsWithResolution) {
+  double L1[2];
+  int k = 0;
+  for (double n : {100.0, 400.0}) {
+    RunConfig cfg = RunConfig::from_scene("sod");
+    cfg.values["n_left"] = n;
+    World w(cfg);
+    w.advance_to(0.2);
+    L1[k++] = w.errors().L1_rho;
+  }
+  // first-order convergence at discontinuities: 4x the particles should at least halve the error
+  EXPECT_LT(L1[1], 0.5 * L1[0]);
+}
+
+TEST(Sod, EveryIntegratorConservesEnergyAndMatchesThePlateau) {
+  const RiemannSolver rs({1.0, 0.0, 1.0}, {0.125, 0.0, 0.1}, 1.4);
+  for (const char* integ : {"rk4", "leapfrog", "predictor_corrector"}) {
+    RunConfig cfg = RunConfig::from_scene("sod");
+    cfg.set("integrator", integ, "test");
+    cfg.values["n_left"] = 200;
+    World w(cfg);
+    const double E0 = w.diagnostics().E_tot;
+    w.advance_to(0.2);
+    const Plateau pl = star_plateau(w, rs, 0.2, 0.03);
+    EXPECT_NEAR(pl.p / 0.30313, 1.0, 0.015) << integ;
+    EXPECT_NEAR(pl.v / 0.92745, 1.0, 0.015) << integ;
+    EXPECT_NEAR(w.diagnostics().E_tot / E0, 1.0, 1e-4) << integ;  // measured <= 2e-5
+  }
+}
+
+TEST(ShocktubeCastellanos, PlateauMatchesExactSolution) {
+  RunConfig cfg = RunConfig::from_scene("shocktube_castellanos");
+  cfg.set("integrator", "leapfrog", "test");  // RK4 is the scene default (seed 003); leapfrog is 4x cheaper
+  World w(cfg);
+  w.advance_to(0.2);
+  const RiemannSolver rs({1.0, 0.0, 1.0}, {0.25, 0.0, 0.1795}, 1.4);
+  const RiemannStar star = rs.star();  // p* = 0.429346, u* = 0.673103
+  const Plateau pl = star_plateau(w, rs, 0.2, 0.01);
+  ASSERT_GT(pl.count, 50u);
+  EXPECT_NEAR(pl.p / star.p, 1.0, 0.01);
+  EXPECT_NEAR(pl.v / star.v, 1.0, 0.01);
+  EXPECT_LT(w.errors().L1_rho, 3e-3);  // measured 1.7e-3 (RK4)
+}
+
+}  // namespace
+}  // namespace sph
