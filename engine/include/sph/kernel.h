@@ -18,7 +18,7 @@ class Kernel {
   /// The default eta of h = eta (m/rho)^(1/d) for this kernel: chosen so that every kernel has the
   /// same standard deviation in units of the particle spacing as M4 with eta = 1.2 (Price 2012,
   /// JCP 231, 759, sec. 2.1.6; the B-spline M_n with unit knot spacing has variance n/12).
-  double default_eta() const;
+  double default_eta() const { return default_eta_; }
 
   /// Dimensionless shape w(q) (without sigma).
   double w(double q) const;
@@ -37,9 +37,13 @@ class Kernel {
   int dim_;
   double support_ = 2.0;
   double sigma_ = 1.0;
+  double default_eta_ = 1.2;
+  double compute_default_eta() const;
 };
 
 /// Expected neighbour count within the support for a uniform lattice: V_d (support eta)^d.
 double expected_neighbours(const Kernel& k, double eta);
 
 }  // namespace sph
+
+#include "sph/kernel_eval.h"

@@ -23,7 +23,7 @@ inline void save(const PhaseSpace& s, Saved& out) {
 /// dst[i] = base[i] + c * rate[i] for i < n.
 inline void axpy(std::vector<double>& dst, const std::vector<double>& base, double c, const std::vector<double>& rate,
                  std::size_t n) {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > 8192)  // small arrays: a thread team costs more
   for (std::size_t i = 0; i < n; ++i) dst[i] = base[i] + c * rate[i];
 }
 

@@ -26,9 +26,9 @@ class RK4Integrator final : public Integrator {
       // next stage state y0 + c dt k_stage (slopes of this stage are the current v, a, du/dt)
       const double cn = c[stage + 1] * dt;
       for (int k = 0; k < s.dim; ++k) {
-        std::vector<double> vstage(s.v[k]->begin(), s.v[k]->begin() + n);
+        vstage_.assign(s.v[k]->begin(), s.v[k]->begin() + n);  // this stage's dx/dt
         detail::axpy(*s.v[k], y0_.v[k], cn, *s.a[k], n);
-        detail::axpy(*s.x[k], y0_.x[k], cn, vstage, n);
+        detail::axpy(*s.x[k], y0_.x[k], cn, vstage_, n);
       }
       if (s.u) detail::axpy(*s.u, y0_.u, cn, *s.dudt, n);
     }
@@ -43,7 +43,7 @@ class RK4Integrator final : public Integrator {
  private:
   detail::Saved y0_;
   std::array<std::vector<double>, 3> kx_, kv_;
-  std::vector<double> ku_;
+  std::vector<double> ku_, vstage_;
 };
 
 std::unique_ptr<Integrator> make_rk4() { return std::make_unique<RK4Integrator>(); }

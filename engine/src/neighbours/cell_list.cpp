@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <omp.h>
 
 #include "sph/neighbours.h"
 
@@ -17,6 +18,9 @@ struct Grid {
   std::vector<std::uint32_t> start;    ///< first sorted slot of each cell (size cells+1)
   std::vector<std::uint32_t> order;    ///< sorted slot -> particle index
   std::vector<double> sx, sy, sz, sh;  ///< positions and h in sorted order (cache friendly)
+  std::vector<double> cell_hmax;       ///< largest h in each cell (prunes cells out of reach)
+  std::array<int, 3> reach{1, 1, 1};   ///< stencil half-width in cells per axis (covers radius * h_max)
+  std::array<double, 3> size{0, 0, 0}; ///< cell size per axis
 
   int coord(double x, int k) const {
     const int c = static_cast<int>((x - lo[k]) * inv[k]);
@@ -24,36 +28,41 @@ struct Grid {
   }
 };
 
-void build_grid(const Particles& p, const std::vector<double>& h, double cell, Grid& g) {
+/// Cell size: radius * h_max in 3D; smaller in 1D/2D when h varies a lot (shock tubes), so that a particle
+/// with a small h does not test the many candidates inside a large-h support. Cells out of reach of
+/// both h_i and the cell's largest h are skipped, so the result does not depend on the cell size.
+void build_grid(const Particles& p, const std::vector<double>& h, double radius, Grid& g) {
   const std::size_t N = p.total();
   g.dim = p.dim();
-  std::array<double, 3> hi{0, 0, 0};
-  for (int k = 0; k < 3; ++k) {
-    g.lo[k] = 0.0;
-    g.n[k] = 1;
-    g.inv[k] = 0.0;
-  }
+  double hmin = 1e300, hmax = 0.0;
+  for (std::size_t i = 0; i < N; ++i) { hmin = std::min(hmin, h[i]); hmax = std::max(hmax, h[i]); }
+  const double shrink[3] = {4.0, 3.0, 1.0};  // max stencil half-width per dimension
+  const double cell = radius * std::max(hmin, hmax / shrink[g.dim - 1]);
   // Cap the number of cells so that a sparse cloud cannot allocate a huge grid.
   const double max_cells = 4.0 * static_cast<double>(N) + 64.0;
   const double per_axis = std::pow(max_cells, 1.0 / g.dim);
+  for (int k = 0; k < 3; ++k) { g.lo[k] = 0.0; g.n[k] = 1; g.inv[k] = 0.0; g.reach[k] = 0; g.size[k] = 1e300; }
   for (int k = 0; k < g.dim; ++k) {
     const auto [mn, mx] = std::minmax_element(p.x[k].begin(), p.x[k].end());
     g.lo[k] = *mn;
-    hi[k] = *mx;
-    const double extent = hi[k] - g.lo[k];
+    const double extent = *mx - *mn;
     int cells = cell > 0.0 ? static_cast<int>(std::floor(extent / cell)) : 1;
     cells = std::clamp(cells, 1, static_cast<int>(std::max(1.0, per_axis)));
     g.n[k] = cells;
     g.inv[k] = extent > 0.0 ? cells / extent : 0.0;
+    g.size[k] = extent > 0.0 ? extent / cells : 1e300;
+    g.reach[k] = extent > 0.0 ? std::min(cells, static_cast<int>(std::ceil(radius * hmax / g.size[k]))) : 0;
   }
   const std::size_t ncell = static_cast<std::size_t>(g.n[0]) * g.n[1] * g.n[2];
   std::vector<std::uint32_t> cell_of(N);
   g.start.assign(ncell + 1, 0);
+  g.cell_hmax.assign(ncell, 0.0);
   for (std::size_t i = 0; i < N; ++i) {
     std::size_t c = 0;
     for (int k = g.dim - 1; k >= 0; --k) c = c * g.n[k] + g.coord(p.x[k][i], k);
     cell_of[i] = static_cast<std::uint32_t>(c);
     ++g.start[c + 1];
+    g.cell_hmax[c] = std::max(g.cell_hmax[c], h[i]);
   }
   for (std::size_t c = 0; c < ncell; ++c) g.start[c + 1] += g.start[c];
   std::vector<std::uint32_t> fill(g.start.begin(), g.start.end() - 1);
@@ -66,6 +75,12 @@ void build_grid(const Particles& p, const std::vector<double>& h, double cell, G
   }
 }
 
+/// Distance from coordinate x to the slab of cell c along axis k (0 inside).
+inline double gap(const Grid& g, int k, int c, double x) {
+  const double lo = g.lo[k] + c * g.size[k], hi = lo + g.size[k];
+  return x < lo ? lo - x : (x > hi ? x - hi : 0.0);
+}
+
 /// Calls fn(j) for every particle j within radius*max(h_i,h_j) of particle i, in a fixed order.
 template <class Fn>
 void for_each_neighbour(const Grid& g, const Particles& p, const std::vector<double>& h, double radius,
@@ -73,43 +88,65 @@ void for_each_neighbour(const Grid& g, const Particles& p, const std::vector<dou
   const double xi = p.x[0][i], yi = p.x[1][i], zi = p.x[2][i], hi = h[i];
   int c[3] = {0, 0, 0};
   for (int k = 0; k < g.dim; ++k) c[k] = g.coord(p.x[k][i], k);
-  const int lo2 = g.dim > 2 ? std::max(c[2] - 1, 0) : 0, hi2 = g.dim > 2 ? std::min(c[2] + 1, g.n[2] - 1) : 0;
-  const int lo1 = g.dim > 1 ? std::max(c[1] - 1, 0) : 0, hi1 = g.dim > 1 ? std::min(c[1] + 1, g.n[1] - 1) : 0;
-  const int lo0 = std::max(c[0] - 1, 0), hi0 = std::min(c[0] + 1, g.n[0] - 1);
-  for (int c2 = lo2; c2 <= hi2; ++c2)
-    for (int c1 = lo1; c1 <= hi1; ++c1) {
-      // cells c0 = lo0..hi0 are contiguous in the sorted arrays
+  int lo[3], up[3];
+  for (int k = 0; k < 3; ++k) {
+    lo[k] = std::max(c[k] - g.reach[k], 0);
+    up[k] = std::min(c[k] + g.reach[k], g.n[k] - 1);
+  }
+  for (int c2 = lo[2]; c2 <= up[2]; ++c2) {
+    const double g2 = g.dim > 2 ? gap(g, 2, c2, zi) : 0.0;
+    for (int c1 = lo[1]; c1 <= up[1]; ++c1) {
+      const double g1 = g.dim > 1 ? gap(g, 1, c1, yi) : 0.0;
       const std::size_t row = (static_cast<std::size_t>(c2) * g.n[1] + c1) * g.n[0];
-      const std::uint32_t s0 = g.start[row + lo0], s1 = g.start[row + hi0 + 1];
-      for (std::uint32_t s = s0; s < s1; ++s) {
-        const double dx = xi - g.sx[s], dy = yi - g.sy[s], dz = zi - g.sz[s];
-        const double R = radius * std::max(hi, g.sh[s]);
-        if (dx * dx + dy * dy + dz * dz < R * R) fn(g.order[s]);
+      for (int c0 = lo[0]; c0 <= up[0]; ++c0) {
+        const std::size_t cell = row + c0;
+        const double g0 = gap(g, 0, c0, xi);
+        const double reach = radius * std::max(hi, g.cell_hmax[cell]);
+        if (g0 * g0 + g1 * g1 + g2 * g2 >= reach * reach) continue;  // nobody in this cell is in range
+        for (std::uint32_t s = g.start[cell], e = g.start[cell + 1]; s < e; ++s) {
+          const double dx = xi - g.sx[s], dy = yi - g.sy[s], dz = zi - g.sz[s];
+          const double R = radius * std::max(hi, g.sh[s]);
+          if (dx * dx + dy * dy + dz * dz < R * R) fn(g.order[s]);
+        }
       }
     }
+  }
 }
 
 }  // namespace
 
 void build_neighbours(const Particles& p, const std::vector<double>& h, double radius, NeighbourList& out) {
   const std::size_t n = p.size();
-  double hmax = 0.0;
-  for (std::size_t i = 0; i < p.total(); ++i) hmax = std::max(hmax, h[i]);
   Grid g;
-  build_grid(p, h, radius * hmax, g);
+  build_grid(p, h, radius, g);
+  // One pass: each thread gathers the lists of a contiguous block of particles into its own buffer;
+  // the buffers are then concatenated in block order, so the result is the same for any thread count.
   out.offset.assign(n + 1, 0);
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    std::uint32_t count = 0;
-    for_each_neighbour(g, p, h, radius, i, [&](std::uint32_t) { ++count; });
-    out.offset[i + 1] = count;
-  }
-  for (std::size_t i = 0; i < n; ++i) out.offset[i + 1] += out.offset[i];
-  out.index.resize(out.offset[n]);
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    std::uint32_t* dst = out.index.data() + out.offset[i];
-    for_each_neighbour(g, p, h, radius, i, [&](std::uint32_t j) { *dst++ = j; });
+  std::vector<std::vector<std::uint32_t>> buffers;
+  std::vector<std::size_t> base;
+#pragma omp parallel
+  {
+    const int T = omp_get_num_threads(), t = omp_get_thread_num();
+#pragma omp single
+    {
+      buffers.assign(T, {});
+      base.assign(T + 1, 0);
+    }
+    const std::size_t b = n * t / T, e = n * (t + 1) / T;
+    auto& local = buffers[t];
+    for (std::size_t i = b; i < e; ++i) {
+      out.offset[i] = static_cast<std::uint32_t>(local.size());  // relative to the block for now
+      for_each_neighbour(g, p, h, radius, i, [&](std::uint32_t j) { local.push_back(j); });
+    }
+#pragma omp barrier
+#pragma omp single
+    {
+      for (int k = 0; k < T; ++k) base[k + 1] = base[k] + buffers[k].size();
+      out.index.resize(base[T]);
+      out.offset[n] = static_cast<std::uint32_t>(base[T]);
+    }
+    std::copy(local.begin(), local.end(), out.index.begin() + static_cast<std::ptrdiff_t>(base[t]));
+    for (std::size_t i = b; i < e; ++i) out.offset[i] += static_cast<std::uint32_t>(base[t]);
   }
 }
 

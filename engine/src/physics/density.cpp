@@ -61,7 +61,9 @@ bool solve_density(const Kernel& K, const Params& prm, double eta, Particles& p,
       const NewtonResult r = newton_bracketed(
           [&](double hh, double& g, double& dg) {
             s = density_sums(K, p, i, nb, m, hh);
-            const double target = m[i] * eta_d / std::pow(hh, d);
+            double hd = hh;
+            for (int k = 1; k < d; ++k) hd *= hh;
+            const double target = m[i] * eta_d / hd;
             g = s.rho - target;
             dg = s.drho + d * target / hh;
           },
