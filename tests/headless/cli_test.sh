@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# The sph command line: output files, exit codes, and that bad input writes nothing (README "Exit codes").
+# usage: cli_test.sh PATH_TO_SPH REPO_ROOT
+set -u
+sph=$1; root=$2
+work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
+fails=0; passes=0
+check() {  # check NAME EXPECTED_RC ACTUAL_RC
+  if [ "$2" -eq "$3" ]; then passes=$((passes + 1)); else echo "FAIL $1: exit $3, expected $2"; fails=$((fails + 1)); fi
+}
+ok() {  # ok NAME CONDITION...
+  if "${@:2}"; then passes=$((passes + 1)); else echo "FAIL $1"; fails=$((fails + 1)); fi
+}
+
+# a run writes every file, the last particle file at the end time
+"$sph" run sod --set scene.n_left=100 --out "$work/sod" > "$work/sod.log"; check "run sod" 0 $?
+for f in scene.json diagnostics.csv errors.csv particles_00000.csv particles_00004.csv; do
+  ok "sod writes $f" test -s "$work/sod/$f"
+done
+ok "no particle file past the end" test ! -e "$work/sod/particles_00005.csv"
+ok "last particle file is at t = 0.2" grep -q "^# t = 0.2," "$work/sod/particles_00004.csv"
+ok "diagnostics header" grep -q "^step,t,dt,E_kin,E_int,E_pot,E_tot,px,py,pz,Lx,Ly,Lz" "$work/sod/diagnostics.csv"
+ok "particle header" grep -q "^id,x,y,z,vx,vy,vz,m,rho,p,u,h$" "$work/sod/particles_00004.csv"
+ok "errors header says what L1 is" grep -q "^# L1 = mean over particles" "$work/sod/errors.csv"
+ok "summary prints L1" grep -q "L1(rho) = " "$work/sod.log"
+# scene.json is a complete scene file: running it again gives the same result
+"$sph" run "$work/sod/scene.json" --out "$work/again" > /dev/null; check "rerun scene.json" 0 $?
+ok "same particles from scene.json" cmp -s "$work/sod/particles_00004.csv" "$work/again/particles_00004.csv"
+# every shipped scene file is valid
+for f in "$root"/assets/scenes/*.json; do "$sph" check "$f" > /dev/null; check "check $f" 0 $?; done
+
+# bad input: exit 3 (invalid scene) or 2 (usage), a message naming the key, nothing written
+bad() {  # bad NAME EXPECTED_RC WORD_IN_MESSAGE ARGS...
+  local name=$1 rc=$2 word=$3; shift 3
+  "$sph" "$@" --out "$work/$name" 2> "$work/$name.err" > /dev/null; check "$name" "$rc" $?
+  ok "$name: message names '$word'" grep -q -- "$word" "$work/$name.err"
+  ok "$name: nothing written" test ! -e "$work/$name"
+}
+bad unknown_key 3 "nope" run sod --set nope=1
+bad out_of_range 3 "eta" run sod --set eta=9
+bad not_a_number 3 "alpha" run sod --set alpha=abc
+bad unknown_scene_key 3 "scene.zz" run sod --set scene.zz=3
+bad unknown_scene 3 "no_such" run no_such
+echo '{"scene": "sod", "params": {"kernel": "M9"}}' > "$work/k.json"
+bad bad_kernel_file 3 "k.json" run "$work/k.json"
+echo '{"scene": "sod",' > "$work/m.json"
+bad malformed_file 3 "m.json" run "$work/m.json"
+echo '{"scene": "sod", "extra": 1}' > "$work/e.json"
+bad unknown_top_key 3 "extra" run "$work/e.json"
+bad bad_threads 2 "threads" run sod --threads 0
+
+# I/O error
+"$sph" run sod --set scene.n_left=50 --until 0.01 --out /proc/sph-cannot-write 2> "$work/io.err" > /dev/null
+check "io error" 4 $?
+
+# divergence: an explicit Euler step far beyond the CFL limit blows up; exit 5 names particle and step
+"$sph" run sod --set integrator=euler --set dt=0.05 --out "$work/div" 2> "$work/div.err" > /dev/null
+check "diverged" 5 $?
+ok "diverged message" grep -q "particle [0-9]* has a non-finite .* at step [0-9]*" "$work/div.err"
+ok "no particle file of the diverged state" test ! -e "$work/div/particles_00004.csv"
+
+echo "$passes passed, $fails failed"
+[ "$fails" -eq 0 ]
