@@ -93,9 +93,20 @@ int run_command(const RunOptions& opt) {
   if (opt.threads > 0) omp_set_num_threads(opt.threads);
   const double t_end = cfg.params.t_end;
   try {
+    const auto t0 = std::chrono::steady_clock::now();
+    World world(cfg);
 #ifdef SPH_HAVE_FRAMES
     std::unique_ptr<FrameRecorder> rec;
     try {
+      if (!opt.frames.empty()) {  // refuse an unknown field before anything is written
+        const Snapshot snap = world.snapshot();
+        if (!snap.find(opt.color_by)) {
+          std::string known;
+          for (const auto& f : snap.fields) known += " " + f.name;
+          throw ConfigError("--color-by " + opt.color_by + ": no such field in scene " + cfg.scene->name +
+                            " (fields:" + known + ")");
+        }
+      }
       rec = make_recorder(opt);  // validates the frame flags before anything is written
     } catch (const ConfigError& e) {
       std::fprintf(stderr, "sph: %s\n", e.what());
@@ -107,8 +118,6 @@ int run_command(const RunOptions& opt) {
       return kUsage;
     }
 #endif
-    const auto t0 = std::chrono::steady_clock::now();
-    World world(cfg);
     std::unique_ptr<RunOutput> out;
     if (!opt.out.empty()) out = std::make_unique<RunOutput>(opt.out, world);
     const double dt_out = cfg.params.dt_out > 0.0 ? cfg.params.dt_out : t_end;
@@ -158,6 +167,7 @@ int run_command(const RunOptions& opt) {
     }
 #ifdef SPH_HAVE_FRAMES
     if (rec) {
+      if (!rec->flush(&err)) throw IoError(err);  // PNGs are compressed in the background
       std::printf("%d frames in %s; make a video with:\n  %s\n", rec->frames_written(), opt.frames.c_str(),
                   rec->ffmpeg_command().c_str());
       if (!opt.video.empty() && !rec->make_video(&err)) {

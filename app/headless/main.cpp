@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
   run->add_option("--out", opt.out, "output directory: scene.json, diagnostics.csv, particles_*.csv, errors.csv");
   run->add_option("--threads", opt.threads, "OpenMP threads")->check(CLI::Range(1, 1024));
   run->add_flag("--quiet", opt.quiet, "no summary line");
+#ifdef SPH_HAVE_FRAMES  // OSMesa build: image sequences
   run->add_option("--frames", opt.frames, "write PNG frames into this directory");
   run->add_option("--every", opt.every, "simulated time between frames");
   run->add_option("--size", opt.size, "frame size WIDTHxHEIGHT (even numbers)");
@@ -31,6 +32,7 @@ int main(int argc, char** argv) {
   run->add_option("--cmap", opt.cmap, "colour map: viridis, magma, cividis, coolwarm");
   run->add_option("--range", opt.range, "colour range: auto or MIN:MAX");
   run->add_option("--video", opt.video, "also make this .mp4 with ffmpeg");
+#endif
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -59,5 +59,18 @@ check "diverged" 5 $?
 ok "diverged message" grep -q "particle [0-9]* has a non-finite .* at step [0-9]*" "$work/div.err"
 ok "no particle file of the diverged state" test ! -e "$work/div/particles_00004.csv"
 
+# headless frames (OSMesa build): no DISPLAY needed; at least two 640x480 PNGs for a 2D and a 1D scene
+png_size() { od -An -tu1 -j16 -N8 "$1" | awk '{print $3*256+$4 "x" $7*256+$8}'; }
+if "$sph" run --help | grep -q -- "--frames"; then
+  for scene in box_random sod; do
+    env -u DISPLAY "$sph" run $scene --until 0.2 --frames "$work/fr_$scene" --every 0.1 --size 640x480 > /dev/null
+    check "frames $scene" 0 $?
+    ok "frames $scene: at least two" test -s "$work/fr_$scene/frame_00001.png"
+    ok "frames $scene: 640x480" test "$(png_size "$work/fr_$scene/frame_00001.png")" = "640x480"
+  done
+  bad odd_size 2 "size" run sod --frames "$work/odd" --size 641x480
+  bad unknown_field 2 "nope" run sod --frames "$work/nf" --color-by nope
+fi
+
 echo "$passes passed, $fails failed"
 [ "$fails" -eq 0 ]

@@ -64,6 +64,9 @@ struct SceneSpec {
   std::vector<SceneParam> params;        ///< the scene's own parameters with defaults and ranges
   std::function<SceneSetup(const Params&, const SceneValues&)> build;
   std::function<std::unique_ptr<Reference>(const Params&, const SceneValues&)> reference;  ///< may be empty
+  /// Optional initial pressure P(x): after the first density sum, u is set to P/((gamma-1) rho) so the
+  /// initial pressure is exactly P even where summation smooths rho (no start-up pressure blip).
+  std::function<double(const Vec3&, const SceneValues&)> initial_pressure;
 
   SceneValues default_values() const;
 };

@@ -27,6 +27,13 @@ World::World(const RunConfig& cfg) : cfg_(cfg), kernel_(cfg.params.kernel, cfg.s
   if (cfg_.scene->reference) reference_ = cfg_.scene->reference(cfg_.params, cfg_.values);
   apply_boundaries(domain_, p_);
   evaluate();
+  if (cfg_.scene->initial_pressure && p_.has(Field::Energy)) {
+    auto& u = p_[Field::Energy];
+    const auto& rho = p_[Field::Density];
+    for (std::size_t i = 0; i < p_.size(); ++i)
+      u[i] = cfg_.scene->initial_pressure(p_.pos(i), cfg_.values) / ((cfg_.params.gamma - 1.0) * rho[i]);
+    evaluate();
+  }
   current_ = true;
   check_finite();
 }

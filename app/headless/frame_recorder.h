@@ -1,0 +1,115 @@
+// Headless frames: renders snapshots off-screen (OSMesa) and writes numbered PNG files, optionally
+// joined into a video by ffmpeg afterwards.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "osmesa_context.h"
+#include "renderer.h"
+#include "view_settings.h"
+
+namespace sph {
+struct Snapshot;
+}
+
+namespace sph::cli {
+
+/// Command-line flag names used in FrameRecorder::create's error messages.
+namespace flag {
+inline constexpr const char* kDir = "--frames";
+inline constexpr const char* kEvery = "--every";
+inline constexpr const char* kSize = "--size";  // WIDTHxHEIGHT
+inline constexpr const char* kColorBy = "--color-by";
+inline constexpr const char* kCmap = "--cmap";
+inline constexpr const char* kRange = "--range";
+inline constexpr const char* kVideo = "--video";
+inline constexpr const char* kFps = "--fps";
+}  // namespace flag
+
+struct FrameOptions {
+  std::string dir;            ///< output directory (created if missing)
+  double every = 0.1;         ///< simulated time between frames (used by frame_due) [time units]
+  int width = 1280;           ///< frame width [px], even (video encoders need even sizes)
+  int height = 720;           ///< frame height [px], even
+  std::string color_by = "rho";
+  std::string cmap = "viridis";
+  bool auto_range = true;     ///< per-frame min/max of the field; else [range_min, range_max]
+  float range_min = 0, range_max = 1;
+  std::string video;          ///< mp4 path to make from the frames, or empty
+  int fps = 30;               ///< video frame rate [frames per second]
+};
+
+/// An off-screen context plus a renderer: snapshot in, RGBA pixels out.
+class OffscreenRenderer {
+ public:
+  static std::unique_ptr<OffscreenRenderer> create(std::string* err);
+  ~OffscreenRenderer();  ///< frees the GL objects with its own context current
+  /// Renders into an RGBA8 buffer of width*height*4 bytes, rows top-down.
+  bool render(const sph::Snapshot& snap, const render::ViewSettings& view, int width, int height,
+              std::vector<std::uint8_t>* rgba, std::string* err);
+  /// glGetError() after the last render (GL_NO_ERROR = 0 when all went well).
+  unsigned gl_error() const { return last_gl_error_; }
+  const render::FrameLayout& last_layout() const { return renderer_.last_layout(); }
+  render::Renderer& renderer() { return renderer_; }
+  std::string description() const { return context_->description(); }
+
+ private:
+  std::unique_ptr<OffscreenContext> context_;  // declared first: destroyed after the renderer
+  render::Renderer renderer_;
+  unsigned last_gl_error_ = 0;
+};
+
+/// Renders one snapshot to RGBA8 (rows top-down) with a temporary context (tests, one-off images).
+bool render_snapshot_rgba(const sph::Snapshot& snap, const render::ViewSettings& view, int width, int height,
+                          std::vector<std::uint8_t>* rgba, std::string* err);
+/// Writes an RGBA8 image (rows top-down) as an RGB PNG.
+bool write_png(const std::string& path, int width, int height, const std::vector<std::uint8_t>& rgba,
+               std::string* err);
+
+class AsyncPngWriter;
+
+class FrameRecorder {
+ public:
+  /// Flushes; a write error not collected by flush() or make_video() is printed to stderr.
+  ~FrameRecorder();
+  /// Validates the options (even width/height, known colour map, positive interval and fps) and
+  /// creates the directory and the context; nullptr with *err naming the offending flag otherwise.
+  static std::unique_ptr<FrameRecorder> create(const FrameOptions& options, std::string* err);
+
+  /// True when the snapshot at time t should become the next frame: the first call, then once t
+  /// reaches each further multiple of `every` after the first frame's time.
+  bool frame_due(double t) const;
+  /// Renders dir/frame_00000.png, frame_00001.png, ... The PNG is compressed and written on a
+  /// background thread while the caller goes on (a write error shows up at the next call or at
+  /// flush). Fails (with the field named and the available ones listed) if the colour-by field is
+  /// not in the snapshot.
+  bool write_frame(const sph::Snapshot& snap, std::string* err);
+  /// Waits until every frame is on disk; false with the first write error.
+  bool flush(std::string* err);
+  int frames_written() const { return frames_; }
+  std::string frame_path(int index) const;
+
+  /// The ffmpeg command line that turns the frames into options.video.
+  std::string ffmpeg_command() const;
+  /// Flushes, then runs ffmpeg_command() if options.video is set (true and nothing done otherwise).
+  bool make_video(std::string* err);
+
+  const FrameOptions& options() const { return options_; }
+  render::ViewSettings& view() { return view_; }  ///< cameras, point sizes: adjustable before frames
+
+ private:
+  FrameRecorder(const FrameOptions& options, std::unique_ptr<OffscreenRenderer> renderer);
+
+  FrameOptions options_;
+  render::ViewSettings view_;
+  std::unique_ptr<OffscreenRenderer> renderer_;
+  std::unique_ptr<AsyncPngWriter> writer_;
+  std::vector<std::uint8_t> pixels_;
+  int frames_ = 0;
+  double first_t_ = 0.0;  // time of frame 0
+  double next_t_ = 0.0;   // time from which the next frame is due
+};
+
+}  // namespace sph::cli

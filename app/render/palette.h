@@ -1,0 +1,19 @@
+// Colours of everything that is not data: a dark-grey theme readable on a projector.
+#pragma once
+#include "overlay_types.h"
+
+namespace sph::render::palette {
+
+inline constexpr Rgba kBackground{0.110f, 0.110f, 0.120f, 1.f};  ///< frame (sRGB ~ 28,28,31)
+inline constexpr Rgba kPlotFill{0.165f, 0.165f, 0.180f, 1.f};    ///< inside axes boxes
+inline constexpr Rgba kAxis{0.62f, 0.62f, 0.66f, 1.f};           ///< axes frame and ticks
+inline constexpr Rgba kGrid{0.26f, 0.26f, 0.28f, 1.f};           ///< grid lines (1D)
+inline constexpr Rgba kDomain{0.45f, 0.45f, 0.50f, 1.f};         ///< domain box outline (2D, 3D)
+inline constexpr Rgba kText{0.92f, 0.92f, 0.94f, 1.f};           ///< labels
+inline constexpr Rgba kDimText{0.62f, 0.62f, 0.66f, 1.f};        ///< secondary labels
+inline constexpr Rgba kWarning{1.00f, 0.70f, 0.25f, 1.f};        ///< "field not found" and similar
+inline constexpr Rgba kLegendFill{0.08f, 0.08f, 0.09f, 0.80f};   ///< legend box
+inline constexpr Rgba kInvalid{1.00f, 0.00f, 1.00f, 1.f};        ///< particles whose value is NaN/inf
+inline constexpr Rgba kNoField{0.80f, 0.80f, 0.82f, 1.f};        ///< particles when no field is shown
+
+}  // namespace sph::render::palette

@@ -1,0 +1,107 @@
+#include "profile_view.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "axes.h"
+#include "palette.h"
+#include "particle_instances.h"
+#include "sph/snapshot.h"
+#include "ticks.h"
+
+namespace sph::render {
+
+namespace {
+
+constexpr double kXPad = 0.02;  // air left and right of the domain, fraction of its length
+constexpr double kYPad = 0.06;  // air above and below the data (auto range), fraction of the range
+
+const sph::ExactCurve* shown_curve(const sph::Snapshot& snap, const ViewSettings& view, const ShownField& shown) {
+  if (!view.show_exact || shown.field == nullptr) return nullptr;
+  const sph::ExactCurve* c = snap.find_exact(shown.field->name);
+  return (c && c->x.size() >= 2 && c->value.size() >= c->x.size()) ? c : nullptr;
+}
+
+// Vertical limits: the colour range (fixed ranges are taken as given), widened to include the exact
+// curve and rounded outwards to tick values.
+void y_limits(const ShownField& shown, const sph::ExactCurve* curve, const ViewSettings& view, double& lo, double& hi) {
+  lo = shown.range.min;
+  hi = shown.range.max;
+  if (shown.field == nullptr) {
+    lo = -1.0, hi = 1.0;
+    return;
+  }
+  if (!view.auto_range) return;
+  if (curve)
+    for (float v : curve->value)
+      if (std::isfinite(v)) lo = std::min(lo, double(v)), hi = std::max(hi, double(v));
+  const double pad = kYPad * (hi - lo);
+  lo -= pad;
+  hi += pad;
+  nice_limits(lo, hi, 10);  // round to a tenth of the range: little wasted headroom
+}
+
+void add_legend(FrameBuild& f, const PixelRect& box, Rgb curve_color, Rgba dot_color, float dot_radius) {
+  const int s = f.layout.text_scale;
+  const float lh = f.text.line_height(s);
+  const float sample = 22.f * s;  // legend sample length [px]
+  const float pad = 6.f * s;
+  const char* kExact = "exact";
+  const char* kSph = "SPH particles";
+  const float w = pad * 3 + sample + std::max(f.text.measure(kExact, s), f.text.measure(kSph, s));
+  const float h = pad * 2 + 2.f * lh + 2.f * s;
+  const PixelRect r{std::round(box.right() - w - pad), std::round(box.y + pad), std::round(w), std::round(h)};
+  f.over.fill_rect(r, palette::kLegendFill);
+  const float x0 = r.x + pad, x1 = x0 + sample;
+  const float y_exact = r.y + pad + 0.5f * lh, y_sph = y_exact + lh + 2.f * s;
+  f.over.line(x0, y_exact, x1, y_exact, 0.75f * s + 0.5f, {curve_color.r, curve_color.g, curve_color.b, 1.f});
+  f.over.disc(0.5f * (x0 + x1), y_sph, dot_radius, dot_color);
+  f.text.add(kExact, x1 + pad, y_exact - 0.5f * lh, s, palette::kText);
+  f.text.add(kSph, x1 + pad, y_sph - 0.5f * lh, s, palette::kText);
+}
+
+}  // namespace
+
+void compose_profile(FrameBuild& f, const sph::Snapshot& snap, const ViewSettings& view, const ShownField& shown) {
+  FrameLayout& L = f.layout;
+  const int s = L.text_scale;
+  const float lh = f.text.line_height(s);
+  const Bounds b = view_bounds(snap);
+  AxesRanges r;
+  const double dx = kXPad * (b[1] - b[0]);
+  r.x0 = b[0] - dx;
+  r.x1 = b[1] + dx;
+  const sph::ExactCurve* curve = shown_curve(snap, view, shown);
+  y_limits(shown, curve, view, r.y0, r.y1);
+
+  // Two passes: the y labels' width depends on the box height, which depends on the labels.
+  PixelRect box = axes_box(L.content, y_label_width(f.text, r.y0, r.y1, L.content.h, s), s, lh, 0.f);
+  box = axes_box(L.content, y_label_width(f.text, r.y0, r.y1, box.h, s), s, lh, 0.f);
+  L.plot = box;
+  f.camera = {Mat4{}, ortho(static_cast<float>(r.x0), static_cast<float>(r.x1), static_cast<float>(r.y0),
+                            static_cast<float>(r.y1), -1.f, 1.f),
+              Vec3f{}};
+  L.plot_to_clip = f.camera.proj;
+
+  add_axes(f, box, r, {"x", shown.field ? shown.label : std::string("(no field)"), true});
+  build_instances(snap, shown, Placement::Profile, 0.f, &f.instances);
+  f.pixel_radius = view.point_px * 0.5f * static_cast<float>(1 + s);  // grows with the text: 3 px -> 4.5 px at 720p
+
+  if (curve != nullptr) {
+    std::vector<float> xy;
+    xy.reserve(2 * curve->x.size());
+    for (std::size_t i = 0; i < curve->x.size(); ++i) {
+      float px = NAN, py = NAN;
+      L.to_pixel(curve->x[i], curve->value[i], 0.f, &px, &py);
+      xy.push_back(px);
+      xy.push_back(py);
+    }
+    const Rgb c = colormap_contrast(shown.cmap);
+    // Thinner than the dots, so that the particles stay visible on both sides of the curve.
+    f.clipped.polyline(xy, 0.75f * s + 0.5f, {c.r, c.g, c.b, 1.f});
+    const Rgb mid = colormap_rgb(shown.cmap, 0.5f);
+    add_legend(f, box, c, {mid.r, mid.g, mid.b, 1.f}, f.pixel_radius);
+  }
+}
+
+}  // namespace sph::render

@@ -1,0 +1,148 @@
+#include "renderer.h"
+
+#include <cmath>
+
+#include "chrome.h"
+#include "font_atlas.h"
+#include "frame_build.h"
+#include "orbit_view.h"
+#include "overlay_pass.h"
+#include "palette.h"
+#include "particle_pass.h"
+#include "plane_view.h"
+#include "profile_view.h"
+#include "sph/snapshot.h"
+
+namespace sph::render {
+
+struct Renderer::Impl {
+  GlApi gl;
+  FontAtlas font;
+  ParticlePass particles;
+  OverlayPass overlay;
+  FrameBuild frame{font};  // reused between frames (keeps its buffers' capacity)
+  bool ready = false;
+};
+
+namespace {
+
+ShownField choose_field(const sph::Snapshot& snap, const ViewSettings& view) {
+  ShownField s;
+  s.cmap = parse_colormap(view.cmap).value_or(Colormap::Viridis);
+  if (!parse_colormap(view.cmap)) s.warning = "unknown colour map '" + view.cmap + "'";
+  s.field = snap.find(view.color_by);
+  if (s.field == nullptr && !snap.fields.empty()) {
+    s.field = &snap.fields.front();
+    s.warning = "no field '" + view.color_by + "'";
+  }
+  if (s.field == nullptr) return s;
+  s.label = s.field->label.empty() ? s.field->name : s.field->label;
+  s.range = resolve_range(*s.field, view);
+  return s;
+}
+
+// glViewport/glScissor take the lower-left corner; layout rects are top-left based.
+void set_viewport(const GlApi& gl, const PixelRect& r, int frame_height) {
+  gl.Viewport(static_cast<GLint>(r.x), frame_height - static_cast<GLint>(r.bottom()), static_cast<GLsizei>(r.w),
+              static_cast<GLsizei>(r.h));
+}
+
+}  // namespace
+
+Renderer::Renderer() : impl_(std::make_unique<Impl>()) {}
+
+Renderer::~Renderer() { shutdown(); }
+
+bool Renderer::initialized() const { return impl_->ready; }
+const FrameLayout& Renderer::last_layout() const { return impl_->frame.layout; }
+const GlApi& Renderer::gl() const { return impl_->gl; }
+void Renderer::set_particle_path(ParticlePath path) { impl_->particles.set_path(path); }
+bool Renderer::particles_on_cpu() const { return impl_->particles.uses_cpu(); }
+
+bool Renderer::init(GetProcFn get_proc, std::string* err) {
+  shutdown();
+  Impl& d = *impl_;
+  if (!d.gl.load(get_proc, err)) return false;
+  if (!d.font.build(err)) return false;
+  if (!d.particles.init(d.gl, err) || !d.overlay.init(d.gl, d.font, err)) {
+    d.particles.destroy(d.gl);
+    d.overlay.destroy(d.gl);
+    return false;
+  }
+  d.ready = true;
+  return true;
+}
+
+void Renderer::shutdown() {
+  Impl& d = *impl_;
+  if (!d.ready) return;
+  d.particles.destroy(d.gl);
+  d.overlay.destroy(d.gl);
+  d.ready = false;
+}
+
+void Renderer::render(const sph::Snapshot& snap, const ViewSettings& view, int width, int height) {
+  Impl& d = *impl_;
+  if (!d.ready || width <= 0 || height <= 0) return;
+  const ShownField shown = choose_field(snap, view);
+  compose(d.frame, snap, view, shown, width, height);
+  draw(d, shown, width, height);
+}
+
+void Renderer::compose(FrameBuild& f, const sph::Snapshot& snap, const ViewSettings& view, const ShownField& shown,
+                       int width, int height) {
+  f.clear();
+  layout_chrome(f, shown, width, height, view.text_scale);
+  if (snap.dim == 1)
+    compose_profile(f, snap, view, shown);
+  else if (snap.dim == 3)
+    compose_orbit(f, snap, view, shown);
+  else
+    compose_plane(f, snap, view, shown);
+  add_colorbar(f, shown);
+  add_title(f, snap, shown);
+}
+
+void Renderer::draw(Impl& d, const ShownField& shown, int width, int height) {
+  const GlApi& gl = d.gl;
+  const FrameBuild& f = d.frame;
+  // Every state this frame depends on is set here (the GUI's own drawing changes it).
+  auto scissor = [&](const PixelRect& r) {
+    gl.Enable(GL_SCISSOR_TEST);
+    gl.Scissor(static_cast<GLint>(r.x), height - static_cast<GLint>(r.bottom()), static_cast<GLsizei>(r.w),
+               static_cast<GLsizei>(r.h));
+  };
+  gl.Disable(GL_SCISSOR_TEST);
+  gl.Disable(GL_DEPTH_TEST);
+  gl.Disable(GL_CULL_FACE);
+  gl.Enable(GL_BLEND);
+  gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  gl.Viewport(0, 0, width, height);
+  const Rgba bg = palette::kBackground, fill = palette::kPlotFill;
+  gl.ClearColor(bg.r, bg.g, bg.b, 1.f);
+  gl.ClearDepth(1.0);
+  gl.DepthMask(GL_TRUE);
+  gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  if (f.fill.w > 0.f && f.fill.h > 0.f) {  // plot background: a scissored clear is the cheapest fill
+    scissor(f.fill);
+    gl.ClearColor(fill.r, fill.g, fill.b, 1.f);
+    gl.Clear(GL_COLOR_BUFFER_BIT);
+    gl.Disable(GL_SCISSOR_TEST);
+  }
+
+  d.overlay.draw_shapes(gl, f.under, width, height);
+
+  const PixelRect& plot = f.layout.plot;
+  set_viewport(gl, plot, height);
+  d.particles.draw(gl, f, shown.cmap, shown.range, shown.field ? palette::kInvalid : palette::kNoField);
+  gl.Viewport(0, 0, width, height);
+
+  scissor(plot);
+  d.overlay.draw_shapes(gl, f.clipped, width, height);
+  gl.Disable(GL_SCISSOR_TEST);
+
+  d.overlay.draw_shapes(gl, f.over, width, height);
+  d.overlay.draw_text(gl, f.text, width, height);
+}
+
+}  // namespace sph::render

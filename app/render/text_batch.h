@@ -1,0 +1,35 @@
+// CPU-side text layout: glyph quads in frame pixels for the text.vert/.frag program.
+#pragma once
+#include <string_view>
+#include <vector>
+
+#include "font_atlas.h"
+#include "overlay_types.h"
+
+namespace sph::render {
+
+/// One vertex of text.vert: position [px], atlas coordinates, colour.
+struct TextVertex {
+  float x, y;
+  float u, v;
+  float r, g, b, a;
+};
+
+class TextBatch {
+ public:
+  explicit TextBatch(const FontAtlas& font) : font_(&font) {}
+  void clear() { vertices_.clear(); }
+  const std::vector<TextVertex>& vertices() const { return vertices_; }
+
+  /// Draws one line of text; (x, y_top) is the anchor on the top edge of the line, aligned by `align`.
+  /// `scale` is an integer pixel scale of the 13 px font. Returns the text width [px].
+  float add(std::string_view text, float x, float y_top, int scale, Rgba color, Align align = Align::Left);
+  float measure(std::string_view text, int scale) const { return font_->measure(text) * static_cast<float>(scale); }
+  float line_height(int scale) const { return font_->line_height() * static_cast<float>(scale); }
+
+ private:
+  const FontAtlas* font_;
+  std::vector<TextVertex> vertices_;
+};
+
+}  // namespace sph::render

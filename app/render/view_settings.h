@@ -1,0 +1,48 @@
+// What the viewer chose: field and colour map, value range, cameras, particle size, text size.
+// Plain values with defaults; the GUI edits its own copy, the headless program fills one from flags.
+#pragma once
+#include <string>
+
+namespace sph::render {
+
+/// 2D view: orthographic, equal aspect.
+struct Camera2D {
+  bool fit = true;                  ///< centre on the snapshot's bounds (ignore center_x/y)
+  float center_x = 0.f, center_y = 0.f;  ///< view centre when !fit [world units]
+  float zoom = 1.f;                 ///< 1 = the bounds fill the plot; 2 = twice as close
+};
+
+/// 3D view: perspective orbit around the centre of the bounds.
+struct OrbitCamera {
+  float yaw_deg = 35.f;    ///< rotation about the up axis [degrees]
+  float pitch_deg = 25.f;  ///< elevation above the horizontal plane [degrees], |pitch| < 90
+  float distance = 0.f;    ///< eye to centre [world units]; 0 = fit the bounds into the view
+  float zoom = 1.f;        ///< divides the (fitted or given) distance
+  float fov_deg = 35.f;    ///< vertical field of view [degrees]
+  int up_axis = 2;         ///< 0 = x, 1 = y, 2 = z points up on screen
+};
+
+enum class SizeMode {
+  Smoothing,  ///< radius = h_scale * h [world units] (never under min_radius_px)
+  Pixels,     ///< radius = point_px [px]
+};
+
+struct ViewSettings {
+  std::string color_by = "rho";  ///< SnapshotField::name shown by colour (and on the y axis in 1D)
+  std::string cmap = "viridis";  ///< viridis, magma, cividis, coolwarm
+  bool auto_range = true;        ///< per frame: the field's min/max; else [range_min, range_max]
+  float range_min = 0.f, range_max = 1.f;  ///< fixed range [field units]
+
+  Camera2D camera2d;
+  OrbitCamera orbit;
+
+  SizeMode size_mode = SizeMode::Smoothing;
+  float h_scale = 0.5f;        ///< disc radius / h in Smoothing mode (0.5 h ~ spacing/2 for h ~ 1.2 dx)
+  float point_px = 3.f;        ///< radius in Pixels mode, and of the 1D profile dots [px]
+  float min_radius_px = 1.f;   ///< smallest disc drawn [px]
+
+  bool show_exact = true;      ///< 1D: draw the exact/reference curve when the snapshot has one
+  int text_scale = 0;          ///< integer pixel scale of the 13 px font; 0 = from the frame height
+};
+
+}  // namespace sph::render

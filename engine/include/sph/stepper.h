@@ -1,0 +1,114 @@
+// The engine on its own thread, for interactive programs (MuJoCo simulate-style). The caller (the GUI
+// thread) reaches the World only through three channels:
+//   1. params mailbox  - post_params(): a whole Params copy (mutex + version); adopted at the top of the
+//                        next step with World::set_params;
+//   2. command queue   - reset, load, pause/resume, single step, scene values (rebuild), pacing,
+//                        recording: drained between steps, in order;
+//   3. snapshot buffer - latest(): a triple buffer of StepperFrame; neither side waits for the other,
+//                        and everything in one frame (snapshot, diagnostics, params) belongs together.
+// Headless runs and tests do not need this: they call World::step() directly.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sph/config.h"
+#include "sph/density.h"
+#include "sph/diagnostics.h"
+#include "sph/snapshot.h"
+
+namespace sph {
+
+struct StepperOptions {
+  int threads = 0;                        ///< OpenMP threads of the engine thread; 0 = OpenMP's default
+  double publish_interval = 1.0 / 120.0;  ///< least wall time between routine publications while running [s]
+  bool start_running = true;              ///< step as soon as the first scene is built
+  double record_every = 0.0;              ///< record from t = 0 of the first scene (see set_record_interval)
+  int nice = 0;                           ///< Linux: niceness added to the engine thread (and the OpenMP team it
+                                          ///< starts), e.g. to keep a display fluid when the engine uses every core
+};
+
+/// One point of the running diagnostics, for plots against simulated time.
+struct HistorySample {
+  double t = 0.0;                             ///< simulated time
+  double E_kin = 0.0, E_int = 0.0, E_tot = 0.0;  ///< energies (seed 000 eqs. 3.4.4-3.4.5)
+  double P = 0.0;                             ///< |linear momentum| (seed 000 eq. 3.4.1)
+  double L1_rho = 0.0;                        ///< L1 density error against the exact solution (0 without one)
+};
+
+/// What the engine thread publishes. Everything here describes the same instant of the same World.
+struct StepperFrame {
+  std::uint64_t serial = 0;        ///< publication counter, increasing
+  std::uint64_t world_serial = 0;  ///< which World: incremented by every load, reset and rebuild;
+                                   ///< step and time never decrease within one world_serial
+  Snapshot snapshot;               ///< particles for the renderer (count == x.size())
+  Diagnostics diagnostics;         ///< energies, momenta, h-iterations, mean neighbours
+  bool has_reference = false;      ///< the scene has an exact solution (errors are meaningful)
+  ErrorNorms errors;               ///< L1 norms against it
+  DensityStats density;            ///< last density solve
+  RunConfig config;                ///< scene, adopted params and scene values of this World
+  std::uint64_t params_version = 0;///< the last mailbox version adopted (0 = none yet)
+  std::vector<HistorySample> history;  ///< this World's diagnostics against time (decimated, <= 2048)
+
+  bool running = false;            ///< stepping (false: paused, at t_end, diverged or failed)
+  bool at_end = false;             ///< paused because t reached params.t_end
+  double real_time_factor = 0.0;   ///< simulated seconds per wall second; 0 = as fast as possible
+  double steps_per_second = 0.0;   ///< measured over the last ~0.5 s of stepping [1/s]
+  double particle_steps_per_second = 0.0;  ///< steps_per_second x particles [1/s]
+
+  bool diverged = false;           ///< World::step threw DivergedError (the stepper paused)
+  std::int64_t diverged_particle = -1, diverged_step = -1;  ///< its particle id and step
+  std::string error;               ///< the divergence or failure message (empty if none)
+
+  double record_every = 0.0;       ///< recording interval (0 = not recording) [time units]
+  int record_index = -1;           ///< >= 0: this frame lands on recording time t0 + index x every
+};
+
+class Stepper {
+ public:
+  /// Starts the engine thread and queues load(cfg); latest() is nullptr until the World is built.
+  explicit Stepper(const RunConfig& cfg, StepperOptions options = {});
+  /// Stops and joins the engine thread.
+  ~Stepper();
+  Stepper(const Stepper&) = delete;
+  Stepper& operator=(const Stepper&) = delete;
+
+  // --- channel 1: params mailbox -------------------------------------------------------------------
+  /// Hands over a whole Params copy; returns its version (1, 2, ...). Adopted before the next step.
+  std::uint64_t post_params(const Params& p);
+
+  // --- channel 2: commands (queued, drained between steps, in order) -------------------------------
+  /// Rebuilds the World from the current scene and scene values with these params (posted too: the
+  /// return value is their mailbox version).
+  std::uint64_t reset(const Params& p);
+  /// Replaces the scene (its params are posted too; returns their version). A failing build keeps the
+  /// old World and reports the error in the next frame.
+  std::uint64_t load(const RunConfig& cfg);
+  void pause();
+  void resume();
+  /// Pauses and advances exactly one step.
+  void step_once();
+  /// Sets a scene value ("n_left", not "scene.n_left") and rebuilds the World.
+  void set_scene_value(const std::string& name, double value);
+  /// Simulated seconds per wall second; 0 = as fast as possible.
+  void set_real_time_factor(double f);
+  /// Pause when t reaches params.t_end (default on).
+  void set_stop_at_end(bool on);
+  /// Records at fixed simulated-time intervals: from now on, steps land on t0 + k x every and each
+  /// such frame is published with record_index = k and held until latest() has taken it. 0 = stop.
+  void set_record_interval(double every);
+
+  // --- channel 3: snapshots --------------------------------------------------------------------------
+  /// The newest published frame, or nullptr before the first. The frame stays valid and unchanged until
+  /// the next call. One reader thread only.
+  const StepperFrame* latest();
+  /// Frames published so far (any thread; for tests and statistics).
+  std::uint64_t published() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace sph

@@ -1,0 +1,289 @@
+#include "engine_loop.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <thread>
+
+#ifdef __linux__
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <cerrno>
+#endif
+
+namespace sph::detail {
+namespace {
+
+constexpr double kStaleAfter = 0.25;  ///< publish even if the last frame is unread after this long [s]
+constexpr double kMaxLag = 0.25;      ///< real-time pacing forgets a backlog longer than this [s]
+
+/// t has reached target (up to rounding of a sum of steps).
+bool reached(double t, double target) { return t >= target - 1e-12 * std::max(1.0, std::abs(target)); }
+
+std::string format(double v) {
+  std::ostringstream os;
+  os.precision(17);
+  os << v;
+  return os.str();
+}
+
+/// Lower this thread's priority (Linux threads have their own nice value; the OpenMP team the thread
+/// creates later inherits it). Failure is harmless: the engine just competes equally with the display.
+void lower_priority([[maybe_unused]] int nice) {
+#ifdef __linux__
+  if (nice <= 0) return;
+  const id_t tid = static_cast<id_t>(::gettid());
+  errno = 0;
+  const int current = ::getpriority(PRIO_PROCESS, tid);
+  if (errno == 0) (void)::setpriority(PRIO_PROCESS, tid, std::min(19, current + nice));
+#endif
+}
+
+}  // namespace
+
+void EngineLoop::run() {
+  if (options_.threads > 0) omp_set_num_threads(options_.threads);
+  lower_priority(options_.nice);
+  for (;;) {
+    if (record_held_) {  // a recording frame must reach the reader before anything replaces it
+      if (out_.unread()) {
+        if (inbox_.stop_requested()) return;
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        continue;
+      }
+      record_held_ = false;
+    }
+    const InboxBatch batch = inbox_.take(adopted_);
+    if (batch.stop) return;
+    for (const Command& c : batch.commands) apply(c);
+    if (batch.has_params) adopt(batch);
+    if (!batch.commands.empty() || batch.has_params) {
+      publish(emit_record_);
+      record_held_ = emit_record_ >= 0;
+      emit_record_ = -1;
+      continue;  // take whatever arrived meanwhile before stepping
+    }
+    if (!stepping()) {
+      inbox_.wait();
+      continue;
+    }
+    if (rtf_ > 0.0 && single_steps_ == 0) {  // real-time factor: simulated time follows the wall clock
+      const auto due = pace_wall_ + std::chrono::duration_cast<Clock::duration>(
+                                        std::chrono::duration<double>((world_->time() - pace_t_) / rtf_));
+      const auto now = Clock::now();
+      if (now < due) {
+        inbox_.wait_until(due);
+        continue;
+      }
+      if (now - due > std::chrono::duration<double>(kMaxLag)) anchor_pacing();  // too slow: no catching up
+    }
+    step();
+  }
+}
+
+void EngineLoop::apply(const Command& c) {
+  using K = Command::Kind;
+  switch (c.kind) {
+    case K::Reset: {
+      if (cfg_.scene == nullptr) { error_ = "reset: no scene is loaded"; break; }
+      RunConfig nc = cfg_;
+      nc.params = c.config.params;
+      rebuild(nc);
+      adopted_ = std::max(adopted_, c.params_version);
+      break;
+    }
+    case K::Load:
+      rebuild(c.config);
+      adopted_ = std::max(adopted_, c.params_version);  // a failed load's params are dropped too
+      break;
+    case K::Pause:
+      running_ = false;
+      single_steps_ = 0;
+      meter_.zero();
+      break;
+    case K::Resume:
+      if (world_ && !diverged_) {
+        running_ = true;
+        at_end_ = false;
+        anchor_pacing();
+        meter_.restart();
+      }
+      break;
+    case K::StepOnce:
+      running_ = false;
+      if (world_ && !diverged_) ++single_steps_;
+      break;
+    case K::SetSceneValue: {
+      if (cfg_.scene == nullptr) { error_ = "no scene is loaded"; break; }
+      RunConfig nc = cfg_;
+      if (world_) nc.params = world_->params();
+      try {
+        nc.set("scene." + c.name, format(c.value), "scene value");
+      } catch (const std::exception& e) {
+        error_ = e.what();
+        break;
+      }
+      rebuild(nc);
+      break;
+    }
+    case K::SetRealTimeFactor:
+      rtf_ = std::isfinite(c.value) ? std::max(0.0, c.value) : 0.0;
+      anchor_pacing();
+      break;
+    case K::SetStopAtEnd:
+      stop_at_end_ = c.flag;
+      break;
+    case K::SetRecordInterval:
+      start_recording(c.value);
+      break;
+  }
+}
+
+void EngineLoop::adopt(const InboxBatch& b) {
+  if (b.params_version <= adopted_) return;  // superseded by a reset or load carrying newer params
+  if (world_) world_->set_params(b.params);
+  else cfg_.params = b.params;
+  adopted_ = b.params_version;
+  anchor_pacing();
+}
+
+void EngineLoop::rebuild(const RunConfig& cfg) {
+  try {
+    if (cfg.scene == nullptr) throw ConfigError("no scene given");
+    auto w = std::make_unique<World>(cfg);
+    world_ = std::move(w);
+    cfg_ = world_->config();
+    ++world_serial_;
+    history_.clear();
+    sample_history();
+    diverged_ = at_end_ = false;
+    diverged_particle_ = diverged_step_ = -1;
+    error_.clear();
+    meter_.zero();
+    anchor_pacing();
+    if (record_every_ > 0.0) start_recording(record_every_);  // the new World's frames start at its t
+  } catch (const std::exception& e) {
+    error_ = "could not build scene '" + (cfg.scene ? cfg.scene->name : std::string("?")) + "': " + e.what();
+    if (!world_) {
+      cfg_ = cfg;
+      running_ = false;
+    }
+  }
+}
+
+void EngineLoop::step() {
+  const double t = world_->time();
+  const double t_end = world_->params().t_end;
+  const bool end_ahead = stop_at_end_ && !reached(t, t_end);
+  double dt_max = end_ahead ? t_end - t : 1e300;
+  if (record_every_ > 0.0) dt_max = std::min(dt_max, record_t0_ + record_next_ * record_every_ - t);
+  try {
+    world_->step(dt_max);
+  } catch (const DivergedError& e) {
+    diverged_particle_ = e.particle;
+    diverged_step_ = e.step;
+    error_ = e.what();
+    diverged_ = true;
+  } catch (const std::exception& e) {  // anything else: stop the same way, the message says what
+    error_ = std::string("step failed: ") + e.what();
+    diverged_ = true;
+  }
+  if (diverged_) {
+    running_ = false;
+    single_steps_ = 0;
+    meter_.zero();
+    publish();
+    return;
+  }
+  meter_.tick();
+  if (history_.due(world_->steps())) sample_history();
+
+  bool force = false;
+  if (single_steps_ > 0) {
+    --single_steps_;
+    force = true;
+  }
+  int record = -1;
+  if (record_every_ > 0.0 && reached(world_->time(), record_t0_ + record_next_ * record_every_)) record = record_next_++;
+  if (end_ahead && reached(world_->time(), t_end)) {
+    running_ = false;
+    at_end_ = true;
+    single_steps_ = 0;
+    force = true;
+  }
+  const double since = std::chrono::duration<double>(Clock::now() - last_publish_).count();
+  if (record >= 0) {
+    publish(record);
+    record_held_ = true;
+  } else if (force || (since >= options_.publish_interval && (!out_.unread() || since >= kStaleAfter))) {
+    publish();
+  }
+}
+
+void EngineLoop::start_recording(double every) {
+  record_every_ = (every > 0.0 && std::isfinite(every)) ? every : 0.0;
+  if (record_every_ > 0.0 && world_) {
+    record_t0_ = world_->time();
+    record_next_ = 1;
+    emit_record_ = 0;  // the current state is frame 0
+  }
+}
+
+void EngineLoop::sample_history() {
+  const Diagnostics d = world_->diagnostics();
+  HistorySample s;
+  s.t = d.t;
+  s.E_kin = d.E_kin;
+  s.E_int = d.E_int;
+  s.E_tot = d.E_tot;
+  s.P = std::sqrt(d.P[0] * d.P[0] + d.P[1] * d.P[1] + d.P[2] * d.P[2]);
+  if (world_->has_reference()) s.L1_rho = world_->errors().L1_rho;
+  history_.add(s);
+}
+
+void EngineLoop::anchor_pacing() {
+  pace_wall_ = Clock::now();
+  pace_t_ = world_ ? world_->time() : 0.0;
+}
+
+void EngineLoop::publish(int record_index) {
+  StepperFrame& f = out_.back();
+  f.serial = ++serial_;
+  f.world_serial = world_serial_;
+  if (world_) {
+    f.snapshot = world_->snapshot();
+    f.diagnostics = world_->diagnostics();
+    f.has_reference = world_->has_reference();
+    f.errors = world_->errors();
+    f.density = world_->density_stats();
+    f.config = world_->config();
+  } else {
+    f.snapshot = Snapshot{};
+    f.diagnostics = Diagnostics{};
+    f.has_reference = false;
+    f.errors = ErrorNorms{};
+    f.density = DensityStats{};
+    f.config = cfg_;
+  }
+  f.params_version = adopted_;
+  f.history = history_.samples();
+  f.running = stepping() && running_;
+  f.at_end = at_end_;
+  f.real_time_factor = rtf_;
+  f.steps_per_second = meter_.rate();
+  f.particle_steps_per_second = meter_.rate() * static_cast<double>(f.snapshot.count);
+  f.diverged = diverged_;
+  f.diverged_particle = diverged_particle_;
+  f.diverged_step = diverged_step_;
+  f.error = error_;
+  f.record_every = record_every_;
+  f.record_index = record_index;
+  out_.publish();
+  published_.store(serial_, std::memory_order_release);
+  last_publish_ = Clock::now();
+}
+
+}  // namespace sph::detail

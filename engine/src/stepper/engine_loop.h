@@ -1,0 +1,65 @@
+// The body of the stepper's engine thread: drains commands, adopts posted params, steps the World
+// (paced to a real-time factor if asked), and publishes frames into the triple buffer. Owns the World;
+// nothing here is touched by another thread except through the Inbox and the TripleBuffer.
+#pragma once
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <memory>
+
+#include "history.h"
+#include "inbox.h"
+#include "rate_meter.h"
+#include "sph/stepper.h"
+#include "sph/world.h"
+#include "triple_buffer.h"
+
+namespace sph::detail {
+
+class EngineLoop {
+ public:
+  EngineLoop(const StepperOptions& options, Inbox& inbox, TripleBuffer<StepperFrame>& out,
+             std::atomic<std::uint64_t>& published)
+      : options_(options), inbox_(inbox), out_(out), published_(published), record_every_(options.record_every) {}
+
+  /// Runs until the inbox asks to stop.
+  void run();
+
+ private:
+  using Clock = std::chrono::steady_clock;
+
+  void apply(const Command& c);          // one command; true state changes only
+  void adopt(const InboxBatch& b);       // mailbox params
+  void rebuild(const RunConfig& cfg);    // new World; keeps the old one if the build throws
+  void step();                           // one World::step with its bookkeeping
+  void start_recording(double every);
+  void sample_history();
+  void publish(int record_index = -1);
+  bool stepping() const { return world_ && !diverged_ && (running_ || single_steps_ > 0); }
+  void anchor_pacing();                  // real-time pacing restarts from (now, t)
+
+  StepperOptions options_;
+  Inbox& inbox_;
+  TripleBuffer<StepperFrame>& out_;
+  std::atomic<std::uint64_t>& published_;
+
+  std::unique_ptr<World> world_;
+  RunConfig cfg_;                      // of world_ (or of the failed first build)
+  std::uint64_t world_serial_ = 0, serial_ = 0, adopted_ = 0;
+  bool running_ = false, at_end_ = false, stop_at_end_ = true, diverged_ = false;
+  int single_steps_ = 0;
+  std::int64_t diverged_particle_ = -1, diverged_step_ = -1;
+  std::string error_;
+  double rtf_ = 0.0;                   // real-time factor (0 = as fast as possible)
+  Clock::time_point pace_wall_;        // pacing anchor: wall time ...
+  double pace_t_ = 0.0;                // ... and simulated time
+  Clock::time_point last_publish_;
+  double record_every_ = 0.0, record_t0_ = 0.0;
+  int record_next_ = 0;                // index of the next recording time
+  bool record_held_ = false;           // a recording frame waits to be read
+  int emit_record_ = -1;               // recording index to publish after the current commands
+  History history_;
+  RateMeter meter_;
+};
+
+}  // namespace sph::detail

@@ -1,0 +1,28 @@
+// Hand-built snapshots for the renderer tests and benchmark (no engine library involved).
+#pragma once
+#include <cstddef>
+
+#include "sph/snapshot.h"
+
+namespace sph::render::test {
+
+/// nx x ny particles on the cell centres of [0,2]x[0,1]; fields "rho" = 1 + x (range [1,3] over the
+/// domain) and "p" = y; h = 1.2 dx.
+Snapshot lattice_2d(int nx, int ny);
+/// Value of "rho" at lattice_2d's particle (i, j) and its index in the arrays.
+std::size_t lattice_index(int nx, int i, int j);
+
+/// Sod shock tube at t = 0.2 on [-0.5, 0.5]: n particles whose "rho" and "p" follow the exact solution
+/// slightly smoothed, plus the exact curves of both sampled at 801 points.
+Snapshot sod_profile_1d(int n);
+/// The exact Sod density at t = 0.2 (gamma = 1.4, left rho = p = 1, right rho = 0.125, p = 0.1).
+float sod_exact_rho(float x);
+
+/// n particles filling a ball of radius 1 centred in [-1,1]^3, denser towards the centre; "rho" and "u".
+Snapshot ball_3d(int n);
+
+/// n particles at deterministic pseudo-random positions in the unit square (dim 2) or cube (dim 3),
+/// one field "rho"; h chosen for about 30 (2D) / 60 (3D) neighbours.
+Snapshot random_cloud(int dim, int n);
+
+}  // namespace sph::render::test
