@@ -95,6 +95,10 @@ SceneSpec sod_scene() {
   s.params = tube_params(-0.5, 0.5, 1.0, 1.0, 0.125, 0.1, 400);
   s.build = [s](const Params& p, const SceneValues& v) { return build_tube(s, p, v); };
   s.initial_pressure = [](const Vec3& r, const SceneValues& v) { return r.x < v.at("x0") ? v.at("p_l") : v.at("p_r"); };
+  // the middle of the left state: far from the diaphragm and (mirror) wall
+  s.density_anchor = [](const SceneValues& v) {
+    return std::pair<std::size_t, double>(static_cast<std::size_t>(v.at("n_left")) / 2, v.at("rho_l"));
+  };
   s.reference = [](const Params& p, const SceneValues& v) -> std::unique_ptr<Reference> {
     return std::make_unique<RiemannReference>(tube_from(v), p.gamma);
   };

@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "sph/domain.h"
@@ -64,6 +65,11 @@ struct SceneSpec {
   std::vector<SceneParam> params;        ///< the scene's own parameters with defaults and ranges
   std::function<SceneSetup(const Params&, const SceneValues&)> build;
   std::function<std::unique_ptr<Reference>(const Params&, const SceneValues&)> reference;  ///< may be empty
+  /// Optional density anchor: a particle index in a uniform region and the density it should have. All
+  /// masses are scaled once so that its summation density equals that target: this removes the kernel's
+  /// lattice bias (M4 in 1D sums to ~0.999 rho) from the initial state. On a uniform lattice the
+  /// self-consistent rho scales exactly with m at fixed eta, so one scaling is exact.
+  std::function<std::pair<std::size_t, double>(const SceneValues&)> density_anchor;
   /// Optional initial pressure P(x): after the first density sum, u is set to P/((gamma-1) rho) so the
   /// initial pressure is exactly P even where summation smooths rho (no start-up pressure blip).
   std::function<double(const Vec3&, const SceneValues&)> initial_pressure;

@@ -1,6 +1,7 @@
 // Small helpers shared by the integrators: y = x + c z over the phase-space arrays.
 #pragma once
 #include <vector>
+#include "core/parallel.h"
 
 #include "sph/integrator.h"
 
@@ -23,7 +24,7 @@ inline void save(const PhaseSpace& s, Saved& out) {
 /// dst[i] = base[i] + c * rate[i] for i < n.
 inline void axpy(std::vector<double>& dst, const std::vector<double>& base, double c, const std::vector<double>& rate,
                  std::size_t n) {
-#pragma omp parallel for schedule(static) if (n > 8192)  // small arrays: a thread team costs more
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
   for (std::size_t i = 0; i < n; ++i) dst[i] = base[i] + c * rate[i];
 }
 

@@ -1,5 +1,6 @@
 // Cell-sorted neighbour search (seed 002 §3.2: the head/next linked list, stored as sorted arrays).
 #include <algorithm>
+#include "core/parallel.h"
 #include <cmath>
 #include <limits>
 #include <omp.h>
@@ -124,7 +125,7 @@ void build_neighbours(const Particles& p, const std::vector<double>& h, double r
   out.offset.assign(n + 1, 0);
   std::vector<std::vector<std::uint32_t>> buffers;
   std::vector<std::size_t> base;
-#pragma omp parallel
+#pragma omp parallel if (n >= kParallelMin)
   {
     const int T = omp_get_num_threads(), t = omp_get_thread_num();
 #pragma omp single

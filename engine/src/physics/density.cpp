@@ -1,5 +1,6 @@
 // Density and smoothing length by Newton-Raphson (seed 000 eq. 3.5.1, App. B) with bisection fallback.
 #include "sph/density.h"
+#include "core/parallel.h"
 #include "sph/newton.h"
 
 #include <algorithm>
@@ -47,7 +48,7 @@ bool solve_density(const Kernel& K, const Params& prm, double eta, Particles& p,
   int overflow = 0;
   std::size_t bisections = 0;
 
-#pragma omp parallel for schedule(dynamic, 64) reduction(+ : overflow, bisections)
+#pragma omp parallel for schedule(dynamic, 64) reduction(+ : overflow, bisections) if (n >= kParallelMin)
   for (std::size_t i = 0; i < n; ++i) {
     const auto nb = nl.of(i);
     Sums s;

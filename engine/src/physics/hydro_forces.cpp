@@ -1,5 +1,6 @@
 // Momentum and energy equations with grad-h terms and artificial dissipation (see sph/hydro.h).
 #include <algorithm>
+#include "core/parallel.h"
 #include <cmath>
 
 #include "sph/hydro.h"
@@ -20,7 +21,7 @@ void hydro_forces(const Kernel& K, const Params& prm, Particles& p, const Neighb
   const double alpha = prm.alpha, beta = prm.beta, eps = prm.visc_eps, alpha_u = prm.alpha_u;
   const double support = K.support();
 
-#pragma omp parallel for schedule(dynamic, 64)
+#pragma omp parallel for schedule(dynamic, 64) if (n >= kParallelMin)
   for (std::size_t i = 0; i < n; ++i) {
     const double xi = p.x[0][i], yi = p.x[1][i], zi = p.x[2][i];
     const double vxi = p.v[0][i], vyi = p.v[1][i], vzi = p.v[2][i];

@@ -159,6 +159,7 @@ void EngineLoop::rebuild(const RunConfig& cfg) {
     ++world_serial_;
     history_.clear();
     sample_history();
+    if (at_end_) running_ = true;  // the run had only stopped at t_end: run the new World
     diverged_ = at_end_ = false;
     diverged_particle_ = diverged_step_ = -1;
     error_.clear();

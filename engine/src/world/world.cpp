@@ -27,6 +27,12 @@ World::World(const RunConfig& cfg) : cfg_(cfg), kernel_(cfg.params.kernel, cfg.s
   if (cfg_.scene->reference) reference_ = cfg_.scene->reference(cfg_.params, cfg_.values);
   apply_boundaries(domain_, p_);
   evaluate();
+  if (cfg_.scene->density_anchor) {
+    const auto [k, rho_target] = cfg_.scene->density_anchor(cfg_.values);
+    const double scale = rho_target / p_[Field::Density][k];
+    for (std::size_t i = 0; i < p_.size(); ++i) p_[Field::Mass][i] *= scale;
+    evaluate();
+  }
   if (cfg_.scene->initial_pressure && p_.has(Field::Energy)) {
     auto& u = p_[Field::Energy];
     const auto& rho = p_[Field::Density];
