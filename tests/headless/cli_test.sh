@@ -26,6 +26,12 @@ ok "summary prints L1" grep -q "L1(rho) = " "$work/sod.log"
 # scene.json is a complete scene file: running it again gives the same result
 "$sph" run "$work/sod/scene.json" --out "$work/again" > /dev/null; check "rerun scene.json" 0 $?
 ok "same particles from scene.json" cmp -s "$work/sod/particles_00004.csv" "$work/again/particles_00004.csv"
+# same particle files with 1 and 2 threads (6000 particles: above the size where thread teams start)
+for t in 1 2; do
+  "$sph" run box_random --set scene.count=6000 --until 0.02 --set dt_out=0.01 --threads $t --out "$work/threads$t" > /dev/null
+  check "box_random --threads $t" 0 $?
+done
+ok "1 and 2 threads: identical particle files" cmp -s "$work/threads1/particles_00002.csv" "$work/threads2/particles_00002.csv"
 # every shipped scene file is valid
 for f in "$root"/assets/scenes/*.json; do "$sph" check "$f" > /dev/null; check "check $f" 0 $?; done
 
