@@ -1,6 +1,6 @@
-// Thread speed-up on a 2D scene (issue 2): box_random with COUNT particles, STEPS steps, timed with 1 and
+// Thread speed-up on a 2D scene (issue 2): SCENE with KEY=VALUE (its size), STEPS steps, timed with 1 and
 // with N threads; also checks that both runs end in the same state (determinism).
-//   scaling_bench [count=40000] [steps=20] [threads=2]
+//   scaling_bench [scene=box_random] [key=scene.count] [value=40000] [steps=20] [threads=2]
 #include <omp.h>
 
 #include <chrono>
@@ -11,10 +11,11 @@
 
 namespace {
 
-double run(int threads, const std::string& count, int steps, std::uint64_t& checksum) {
+double run(int threads, const std::string& scene, const std::string& key, const std::string& value, int steps,
+           std::uint64_t& checksum) {
   omp_set_num_threads(threads);
-  sph::RunConfig cfg = sph::RunConfig::from_scene("box_random");
-  cfg.set("scene.count", count, "scaling_bench");
+  sph::RunConfig cfg = sph::RunConfig::from_scene(scene);
+  cfg.set(key, value, "scaling_bench");
   sph::World w(cfg);
   const auto t0 = std::chrono::steady_clock::now();
   for (int s = 0; s < steps; ++s) w.step();
@@ -32,13 +33,16 @@ double run(int threads, const std::string& count, int steps, std::uint64_t& chec
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::string count = argc > 1 ? argv[1] : "40000";
-  const int steps = argc > 2 ? std::stoi(argv[2]) : 20;
-  const int threads = argc > 3 ? std::stoi(argv[3]) : 2;
+  const std::string scene = argc > 1 ? argv[1] : "box_random";
+  const std::string key = argc > 2 ? argv[2] : "scene.count";
+  const std::string value = argc > 3 ? argv[3] : "40000";
+  const int steps = argc > 4 ? std::stoi(argv[4]) : 20;
+  const int threads = argc > 5 ? std::stoi(argv[5]) : 2;
   std::uint64_t c1 = 0, cn = 0;
-  const double t1 = run(1, count, steps, c1);
-  const double tn = run(threads, count, steps, cn);
-  std::printf("box_random %s particles, %d steps: 1 thread %.3f s, %d threads %.3f s, speed-up %.2f, %s\n",
-              count.c_str(), steps, t1, threads, tn, t1 / tn, c1 == cn ? "identical states" : "STATES DIFFER");
+  const double t1 = run(1, scene, key, value, steps, c1);
+  const double tn = run(threads, scene, key, value, steps, cn);
+  std::printf("%s %s=%s, %d steps: 1 thread %.3f s, %d threads %.3f s, speed-up %.2f, %s\n", scene.c_str(),
+              key.c_str(), value.c_str(), steps, t1, threads, tn, t1 / tn,
+              c1 == cn ? "identical states" : "STATES DIFFER");
   return c1 == cn ? 0 : 1;
 }

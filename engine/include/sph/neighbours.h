@@ -3,6 +3,7 @@
 // any thread count.
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -12,9 +13,12 @@ namespace sph {
 
 /// Compressed neighbour lists of the real particles: neighbours of i are index[offset[i] .. offset[i+1]).
 /// Each list includes i itself and is in a deterministic order (cell by cell, index order inside a cell).
+struct NeighbourWorkspace;  ///< cell grid and per-thread buffers, kept between builds (no page faults)
+
 struct NeighbourList {
   std::vector<std::uint32_t> offset;
   std::vector<std::uint32_t> index;
+  std::shared_ptr<NeighbourWorkspace> work;  ///< reused by build_neighbours; created on first use
   std::span<const std::uint32_t> of(std::size_t i) const {
     return {index.data() + offset[i], index.data() + offset[i + 1]};
   }

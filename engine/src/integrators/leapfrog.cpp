@@ -15,12 +15,12 @@ class LeapfrogIntegrator final : public Integrator {
     for (int k = 0; k < s.dim; ++k) {
       detail::axpy(*s.v[k], *s.v[k], half, *s.a[k], n);  // kick: v_{1/2}
       detail::axpy(*s.x[k], *s.x[k], dt, *s.v[k], n);     // drift: x_1
-      vhalf_[k].assign(s.v[k]->begin(), s.v[k]->begin() + n);
+      detail::copy(vhalf_[k], *s.v[k], n);
       detail::axpy(*s.v[k], vhalf_[k], half, *s.a[k], n);  // predicted v_1 for the evaluation
     }
     if (s.u) {
       detail::axpy(*s.u, *s.u, half, *s.dudt, n);
-      uhalf_.assign(s.u->begin(), s.u->begin() + n);
+      detail::copy(uhalf_, *s.u, n);
       detail::axpy(*s.u, uhalf_, half, *s.dudt, n);
     }
     eval();

@@ -13,12 +13,19 @@ struct Saved {
   std::vector<double> u;
 };
 
+/// dst[0..n) = src[0..n) (threaded for large n).
+inline void copy(std::vector<double>& dst, const std::vector<double>& src, std::size_t n) {
+  dst.resize(n);
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+  for (std::size_t i = 0; i < n; ++i) dst[i] = src[i];
+}
+
 inline void save(const PhaseSpace& s, Saved& out) {
   for (int k = 0; k < s.dim; ++k) {
-    out.x[k].assign(s.x[k]->begin(), s.x[k]->begin() + s.n);
-    out.v[k].assign(s.v[k]->begin(), s.v[k]->begin() + s.n);
+    copy(out.x[k], *s.x[k], s.n);
+    copy(out.v[k], *s.v[k], s.n);
   }
-  if (s.u) out.u.assign(s.u->begin(), s.u->begin() + s.n);
+  if (s.u) copy(out.u, *s.u, s.n);
 }
 
 /// dst[i] = base[i] + c * rate[i] for i < n.

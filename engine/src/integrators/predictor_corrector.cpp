@@ -41,8 +41,8 @@ class PredictorCorrector final : public Integrator {
 
  private:
   void store_rates(const PhaseSpace& s) {
-    for (int k = 0; k < s.dim; ++k) a_[k].assign(s.a[k]->begin(), s.a[k]->begin() + s.n);
-    if (s.u) dudt_.assign(s.dudt->begin(), s.dudt->begin() + s.n);
+    for (int k = 0; k < s.dim; ++k) detail::copy(a_[k], *s.a[k], s.n);
+    if (s.u) detail::copy(dudt_, *s.dudt, s.n);
     have_rates_ = true;
     rate_n_ = s.n;
   }

@@ -26,7 +26,7 @@ class RK4Integrator final : public Integrator {
       // next stage state y0 + c dt k_stage (slopes of this stage are the current v, a, du/dt)
       const double cn = c[stage + 1] * dt;
       for (int k = 0; k < s.dim; ++k) {
-        vstage_.assign(s.v[k]->begin(), s.v[k]->begin() + n);  // this stage's dx/dt
+        detail::copy(vstage_, *s.v[k], n);  // this stage's dx/dt
         detail::axpy(*s.v[k], y0_.v[k], cn, *s.a[k], n);
         detail::axpy(*s.x[k], y0_.x[k], cn, vstage_, n);
       }

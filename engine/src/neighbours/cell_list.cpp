@@ -20,6 +20,7 @@ struct Grid {
   std::vector<std::uint32_t> order;    ///< sorted slot -> particle index
   std::vector<double> sx, sy, sz, sh;  ///< positions and h in sorted order (cache friendly)
   std::vector<double> cell_hmax;       ///< largest h in each cell (prunes cells out of reach)
+  std::vector<std::uint32_t> cell_of, fill;  ///< scratch of the counting sort
   std::array<int, 3> reach{1, 1, 1};   ///< stencil half-width in cells per axis (covers radius * h_max)
   std::array<double, 3> size{0, 0, 0}; ///< cell size per axis
 
@@ -55,21 +56,28 @@ void build_grid(const Particles& p, const std::vector<double>& h, double radius,
     g.reach[k] = extent > 0.0 ? std::min(cells, static_cast<int>(std::ceil(radius * hmax / g.size[k]))) : 0;
   }
   const std::size_t ncell = static_cast<std::size_t>(g.n[0]) * g.n[1] * g.n[2];
-  std::vector<std::uint32_t> cell_of(N);
+  auto& cell_of = g.cell_of;
+  cell_of.resize(N);
   g.start.assign(ncell + 1, 0);
   g.cell_hmax.assign(ncell, 0.0);
+#pragma omp parallel for schedule(static) if (N >= kParallelMin)
   for (std::size_t i = 0; i < N; ++i) {
     std::size_t c = 0;
     for (int k = g.dim - 1; k >= 0; --k) c = c * g.n[k] + g.coord(p.x[k][i], k);
     cell_of[i] = static_cast<std::uint32_t>(c);
+  }
+  for (std::size_t i = 0; i < N; ++i) {
+    const std::uint32_t c = cell_of[i];
     ++g.start[c + 1];
     g.cell_hmax[c] = std::max(g.cell_hmax[c], h[i]);
   }
   for (std::size_t c = 0; c < ncell; ++c) g.start[c + 1] += g.start[c];
-  std::vector<std::uint32_t> fill(g.start.begin(), g.start.end() - 1);
+  auto& fill = g.fill;
+  fill.assign(g.start.begin(), g.start.end() - 1);
   g.order.resize(N);
   for (std::size_t i = 0; i < N; ++i) g.order[fill[cell_of[i]]++] = static_cast<std::uint32_t>(i);
   g.sx.resize(N); g.sy.resize(N); g.sz.resize(N); g.sh.resize(N);
+#pragma omp parallel for schedule(static) if (N >= kParallelMin)
   for (std::size_t s = 0; s < N; ++s) {
     const std::uint32_t i = g.order[s];
     g.sx[s] = p.x[0][i]; g.sy[s] = p.x[1][i]; g.sz[s] = p.x[2][i]; g.sh[s] = h[i];
@@ -114,40 +122,54 @@ void for_each_neighbour(const Grid& g, const Particles& p, const std::vector<dou
   }
 }
 
+
 }  // namespace
+
+struct NeighbourWorkspace {
+  Grid grid;
+  std::vector<std::vector<std::uint32_t>> buffers;  ///< one per thread
+  std::vector<std::size_t> base;
+};
 
 void build_neighbours(const Particles& p, const std::vector<double>& h, double radius, NeighbourList& out) {
   const std::size_t n = p.size();
-  Grid g;
+  if (!out.work) out.work = std::make_shared<NeighbourWorkspace>();
+  Grid& g = out.work->grid;
   build_grid(p, h, radius, g);
   // One pass: each thread gathers the lists of a contiguous block of particles into its own buffer;
   // the buffers are then concatenated in block order, so the result is the same for any thread count.
   out.offset.assign(n + 1, 0);
-  std::vector<std::vector<std::uint32_t>> buffers;
-  std::vector<std::size_t> base;
+  auto& buffers = out.work->buffers;
+  auto& base = out.work->base;
 #pragma omp parallel if (n >= kParallelMin)
   {
     const int T = omp_get_num_threads(), t = omp_get_thread_num();
 #pragma omp single
     {
-      buffers.assign(T, {});
+      if (buffers.size() < static_cast<std::size_t>(T)) buffers.resize(T);
       base.assign(T + 1, 0);
     }
     const std::size_t b = n * t / T, e = n * (t + 1) / T;
-    auto& local = buffers[t];
+    // Work on a vector object of this thread's own stack: the vector objects in `buffers` share a cache
+    // line, and updating their end pointers from two cores would serialise the loop (false sharing).
+    std::vector<std::uint32_t> local;
+    local.swap(buffers[t]);
+    local.clear();  // keeps its capacity from the last build
     for (std::size_t i = b; i < e; ++i) {
       out.offset[i] = static_cast<std::uint32_t>(local.size());  // relative to the block for now
       for_each_neighbour(g, p, h, radius, i, [&](std::uint32_t j) { local.push_back(j); });
     }
+    base[t + 1] = local.size();
 #pragma omp barrier
 #pragma omp single
     {
-      for (int k = 0; k < T; ++k) base[k + 1] = base[k] + buffers[k].size();
+      for (int k = 0; k < T; ++k) base[k + 1] += base[k];  // sizes -> offsets
       out.index.resize(base[T]);
       out.offset[n] = static_cast<std::uint32_t>(base[T]);
     }
     std::copy(local.begin(), local.end(), out.index.begin() + static_cast<std::ptrdiff_t>(base[t]));
     for (std::size_t i = b; i < e; ++i) out.offset[i] += static_cast<std::uint32_t>(base[t]);
+    local.swap(buffers[t]);  // keep the capacity for the next build
   }
 }
 

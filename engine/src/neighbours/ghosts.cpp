@@ -1,5 +1,6 @@
 // Ghost particles for periodic boundaries (seed 000 §4.1.1) and mirror walls (seed 000 §4.2.1).
 #include <cmath>
+#include "core/parallel.h"
 #include <vector>
 
 #include "sph/domain.h"
@@ -79,6 +80,7 @@ void apply_boundaries(const Domain& d, Particles& p) {
     auto& x = p.x[k];
     auto& v = p.v[k];
     if (d.bc[k] == Boundary::Periodic) {
+#pragma omp parallel for if (n >= kParallelMin)
       for (std::size_t i = 0; i < n; ++i) {
         if (x[i] < lo || x[i] >= hi) {
           x[i] = lo + std::fmod(x[i] - lo, L);
@@ -87,6 +89,7 @@ void apply_boundaries(const Domain& d, Particles& p) {
         }
       }
     } else if (d.bc[k] == Boundary::Wall) {
+#pragma omp parallel for if (n >= kParallelMin)
       for (std::size_t i = 0; i < n; ++i) {
         if (x[i] < lo) { x[i] = 2.0 * lo - x[i]; v[i] = -v[i]; }
         else if (x[i] > hi) { x[i] = 2.0 * hi - x[i]; v[i] = -v[i]; }

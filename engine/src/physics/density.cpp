@@ -84,16 +84,21 @@ bool solve_density(const Kernel& K, const Params& prm, double eta, Particles& p,
   }
   if (overflow > 0) return false;
 
-  double sum_it = 0.0, sum_nb = 0.0;
+  double sum_it = 0.0, sum_nb = 0.0;  // sums of integers: exact, so the same for any thread count
+  std::size_t not_converged = 0;
+  int max_it = 0;
   stats = DensityStats{};
   stats.bisections = bisections;
+#pragma omp parallel for reduction(+ : sum_it, sum_nb, not_converged) reduction(max : max_it) if (n >= kParallelMin)
   for (std::size_t i = 0; i < n; ++i) {
     int it = static_cast<int>(hiter[i]);
-    if (it >= 1000) { ++stats.not_converged; it -= 1000; hiter[i] = it; }
+    if (it >= 1000) { ++not_converged; it -= 1000; hiter[i] = it; }
     sum_it += it;
-    stats.max_iterations = std::max(stats.max_iterations, it);
+    max_it = std::max(max_it, it);
     sum_nb += nneigh[i];
   }
+  stats.not_converged = not_converged;
+  stats.max_iterations = max_it;
   stats.mean_iterations = n ? sum_it / n : 0.0;
   stats.mean_neighbours = n ? sum_nb / n : 0.0;
   return true;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/parallel.h"
 #include "sph/hydro.h"
 
 namespace sph {
@@ -63,12 +64,14 @@ void World::evaluate() {
   auto& h = p_[Field::H];
   for (int attempt = 0;; ++attempt) {
     double hmax = 0.0;
+#pragma omp parallel for reduction(max : hmax) if (n >= kParallelMin)
     for (std::size_t i = 0; i < n; ++i) hmax = std::max(hmax, h[i]);
     make_ghosts(domain_, kernel_.support() * kSkin * hmax, p_);
     copy_ghost_field(p_, Field::Mass);
     copy_ghost_field(p_, Field::H);
     build_neighbours(p_, h, kernel_.support() * kSkin, nl_);
     h_limit_.resize(n);
+#pragma omp parallel for if (n >= kParallelMin)
     for (std::size_t i = 0; i < n; ++i) h_limit_[i] = kSkin * h[i];
     if (solve_density(kernel_, cfg_.params, eta(), p_, nl_, h_limit_, dstats_)) break;
     if (attempt > 20) throw DivergedError(-1, step_, t_, "smoothing length (h does not converge)");
@@ -93,7 +96,8 @@ double World::next_dt() {
   const std::size_t n = p_.size();
   const auto& h = p_[Field::H];
   const auto& vs = p_[Field::SignalSpeed];
-  double dt = 1e300;
+  double dt = 1e300;  // a minimum: the same for any thread count
+#pragma omp parallel for reduction(min : dt) if (n >= kParallelMin)
   for (std::size_t i = 0; i < n; ++i) {
     if (vs[i] > 0.0) dt = std::min(dt, h[i] / vs[i]);  // Courant condition
     const double a = std::sqrt(p_.a[0][i] * p_.a[0][i] + p_.a[1][i] * p_.a[1][i] + p_.a[2][i] * p_.a[2][i]);
@@ -133,8 +137,11 @@ void World::advance_to(double t_target) {
 void World::check_finite() const {
   const std::size_t n = p_.size();
   auto bad = [&](const std::vector<double>& a, const char* name) {
+    std::size_t first = n;  // lowest index of a non-finite value: the same for any thread count
+#pragma omp parallel for reduction(min : first) if (n >= kParallelMin)
     for (std::size_t i = 0; i < n; ++i)
-      if (!std::isfinite(a[i])) throw DivergedError(p_.id[i], step_, t_, name);
+      if (!std::isfinite(a[i])) first = std::min(first, i);
+    if (first < n) throw DivergedError(p_.id[first], step_, t_, name);
   };
   const char* xn[3] = {"x", "y", "z"};
   const char* vn[3] = {"vx", "vy", "vz"};
