@@ -1,0 +1,45 @@
+// When the engine finds a NaN or inf it pauses; this dialog says which particle and step, suggests what
+// to change, and offers a reset (or keeping the broken state on screen to look at it).
+#include <imgui.h>
+
+#include "panels.h"
+
+namespace sph::gui {
+
+void divergence_modal(GuiState& s) {
+  const StepperFrame* f = s.frame();
+  const char* title = "The simulation diverged";
+  if (f && f->diverged && s.acknowledged_divergence != f->world_serial && !ImGui::IsPopupOpen(title))
+    ImGui::OpenPopup(title);
+  ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  if (f == nullptr || !f->diverged) {  // reset from elsewhere (R key, scene picker): nothing to say
+    ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+    return;
+  }
+  ImGui::PushTextWrapPos(ImGui::GetFontSize() * 34.f);
+  ImGui::TextUnformatted(f->error.c_str());
+  if (f->diverged_particle >= 0)
+    ImGui::Text("particle %lld, step %lld, t = %.6g", static_cast<long long>(f->diverged_particle),
+                static_cast<long long>(f->diverged_step), f->snapshot.t);
+  else
+    ImGui::Text("step %lld, t = %.6g", static_cast<long long>(f->diverged_step), f->snapshot.t);
+  ImGui::TextDisabled("The engine is paused. Try a smaller dt or cfl, more viscosity (alpha, beta), or another "
+                      "integrator, then reset.");
+  ImGui::PopTextWrapPos();
+  if (ImGui::Button("Reset and run")) {
+    s.reset();
+    s.resume();
+    s.acknowledged_divergence = f->world_serial;
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Keep paused")) {
+    s.acknowledged_divergence = f->world_serial;
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::EndPopup();
+}
+
+}  // namespace sph::gui

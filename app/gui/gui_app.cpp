@@ -1,0 +1,201 @@
+#include "gui_app.h"
+
+#include "gui_gl.h"  // first: GL prototypes before any other glcorearb.h include
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <thread>
+
+#include "draw_data_hash.h"
+#include "engine_rate.h"
+#include "frame_stats.h"
+#include "gui_state.h"
+#include "layout.h"
+#include "panels.h"
+#include "particle_view.h"
+#include "png_writer.h"
+#include "recorder.h"
+#include "sph/config.h"
+#include "sph/stepper.h"
+#include "view_target.h"
+#include "window.h"
+
+namespace sph::gui {
+namespace {
+
+constexpr int kOk = 0, kNoDisplay = 1, kInvalidScene = 3, kIoError = 4;  // as the headless `sph`
+
+RunConfig resolve(const GuiOptions& o) {
+  RunConfig cfg = RunConfig::load(o.scene);
+  for (const std::string& kv : o.sets) {
+    const auto eq = kv.find('=');
+    if (eq == std::string::npos || eq == 0) throw ConfigError("--set " + kv + ": expected key=value");
+    cfg.set(kv.substr(0, eq), kv.substr(eq + 1), "--set " + kv);
+  }
+  return cfg;
+}
+
+Rect to_framebuffer(const Rect& r) {
+  const ImVec2 s = ImGui::GetIO().DisplayFramebufferScale;
+  return {r.x * s.x, r.y * s.y, r.w * s.x, r.h * s.y};
+}
+
+bool screenshot(const std::string& path, int w, int h, std::string* err) {
+  std::vector<std::uint8_t> rgba;
+  read_window_rgba(w, h, &rgba);
+  return write_png(path, w, h, rgba, err);
+}
+
+/// Starts or stops recording as the panels asked.
+void handle_recording(GuiState& s, Recorder& rec) {
+  std::string err;
+  if (s.requests.start_recording && !s.recording) {
+    if (!(s.record_every > 0.0)) {
+      s.notify("recording: 'every' must be a positive time interval", true);
+    } else if (rec.start(s.record_dir, &err)) {
+      s.recording = true;
+      s.set_record_interval(s.record_every);
+      s.notify("recording into " + s.record_dir + "/");
+    } else {
+      s.notify("recording: " + err, true);
+    }
+  }
+  if (s.requests.stop_recording && s.recording) {
+    s.recording = false;
+    s.set_record_interval(0.0);
+    rec.stop();
+    s.notify("wrote " + std::to_string(rec.frames()) + " frames to " + rec.dir() + "/");
+  }
+  s.requests.start_recording = s.requests.stop_recording = false;
+}
+
+}  // namespace
+
+int run_gui(const GuiOptions& o) {
+  RunConfig cfg;
+  try {
+    cfg = resolve(o);
+  } catch (const ConfigError& e) {
+    std::fprintf(stderr, "sph-gui: invalid scene: %s\n", e.what());
+    return kInvalidScene;
+  }
+  std::string err;
+  auto window = Window::create(o.width, o.height, "SPH sandbox", &err);
+  if (!window) {
+    std::fprintf(stderr, "sph-gui: %s\n", err.c_str());
+    return kNoDisplay;
+  }
+  ParticleView view(o.view_fps);  // GL objects: destroyed before the window (declared after it)
+  if (!view.init(&err)) {
+    std::fprintf(stderr, "sph-gui: renderer: %s\n", err.c_str());
+    return kNoDisplay;
+  }
+  StepperOptions so;
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  so.threads = o.threads > 0 ? o.threads : std::max(1, cores - 1);  // one core stays with the display
+  if (so.threads >= cores) so.nice = 5;  // the engine takes every core: let the display go first
+  so.start_running = !o.paused;
+  if (!o.record.empty()) so.record_every = o.record_every;  // frames from t = 0, like `sph run --frames`
+  Stepper stepper(cfg, so);
+  GuiState state(stepper, cfg);
+  Recorder recorder;
+  FrameStats stats(o.max_fps);
+  EngineRate engine_rate;
+  if (!o.record.empty()) {  // the stepper already records; open the directory
+    state.record_dir = o.record;
+    state.record_every = o.record_every;
+    parse_size(o.record_size, &state.record_width, &state.record_height);
+    if (!recorder.start(o.record, &err)) {
+      std::fprintf(stderr, "sph-gui: --record: %s\n", err.c_str());
+      return kIoError;
+    }
+    state.recording = true;
+  }
+  int rc = kOk;
+  std::uint64_t last_ui = 0;  // draw-data fingerprint of the last drawn frame
+  int last_fw = 0, last_fh = 0;
+
+  while (!window->should_close()) {
+    glfwPollEvents();
+    state.update();
+    const StepperFrame* f = state.frame();
+    if (f) engine_rate.see(*f);
+    if (f && state.fresh() && f->record_index >= 0 && recorder.active() &&
+        !recorder.write(view, f->snapshot, state.view, state.record_width, state.record_height, &err)) {
+      state.notify("recording stopped: " + err, true);
+      state.requests.stop_recording = true;
+      rc = kIoError;
+    }
+
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    const ImGuiIO& io = ImGui::GetIO();
+    const Layout L = compute_layout(static_cast<int>(io.DisplaySize.x), static_cast<int>(io.DisplaySize.y),
+                                    ImGui::GetFontSize());
+    draw_panels(state, L, stats);
+    if (!io.WantTextInput && ImGui::IsKeyPressed(GLFW_KEY_F12, false)) state.requests.screenshot = true;
+    if (f) view.interact(to_framebuffer(L.view), f->snapshot, &state.view);
+    if (!f || state.building()) {  // World construction can take seconds (10^5 particles)
+      const std::string text = "building " + state.scene_name() + " ...";
+      ImGui::GetBackgroundDrawList()->AddText(ImVec2(L.view.x + 20.f, L.view.y + L.view.h - 2.f * ImGui::GetFontSize()),
+                                              IM_COL32(255, 200, 90, 255), text.c_str());
+    }
+    ImGui::Render();
+
+    // Draw only when something on screen changes: the panels' draw data, the particle view, the size,
+    // or a damaged window; or when pixels are wanted. Otherwise the last picture stays up (idle frame).
+    int fw = 0, fh = 0;
+    window->framebuffer_size(&fw, &fh);
+    const Rect view_rect = to_framebuffer(L.view);
+    const std::uint64_t ui = draw_data_hash(*ImGui::GetDrawData());
+    const bool last = o.quit_after_frames > 0 && stats.frames() + 1 >= o.quit_after_frames;
+    const bool draw = o.always_redraw || stats.frames() < 2 || ui != last_ui || fw != last_fw || fh != last_fh ||
+                      window->take_damage() || (f && view.stale(f->serial, state.view, view_rect)) ||
+                      state.requests.screenshot || (last && !o.screenshot.empty());
+    if (draw) {
+      glViewport(0, 0, fw, fh);
+      glClearColor(0.09f, 0.09f, 0.10f, 1.f);  // the panels' background (they draw none themselves)
+      glClear(GL_COLOR_BUFFER_BIT);
+      if (f) view.draw(f->snapshot, f->serial, state.view, view_rect, fh);
+      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    }
+    last_ui = ui;
+    last_fw = fw;
+    last_fh = fh;
+
+    handle_recording(state, recorder);
+    if (state.requests.screenshot) {
+      state.requests.screenshot = false;
+      const std::string path = "sph-gui_" + (f ? f->snapshot.scene + "_step" + std::to_string(f->snapshot.step) : "empty") + ".png";
+      if (screenshot(path, fw, fh, &err)) state.notify("wrote " + path);
+      else state.notify(err, true);
+    }
+    if (last && !o.screenshot.empty() && !screenshot(o.screenshot, fw, fh, &err)) {
+      std::fprintf(stderr, "sph-gui: %s\n", err.c_str());
+      rc = kIoError;
+    }
+    if (draw) glfwSwapBuffers(window->handle());
+    stats.frame_done(draw);
+
+    if (last) break;
+  }
+
+  const StepperFrame* f = state.frame();
+  std::printf("sph-gui: %lld frames in %.2f s: %.1f display fps (%.1f drawn/s); engine %.4g steps/s (%.3g "
+              "particle-steps/s, %zu particles, %d threads)\n",
+              static_cast<long long>(stats.frames()), stats.seconds(), stats.mean_fps(), stats.mean_drawn_fps(),
+              engine_rate.rate(),
+              engine_rate.rate() * static_cast<double>(f ? f->snapshot.count : 0), f ? f->snapshot.count : 0,
+              so.threads);
+  if (recorder.frames() > 0) std::printf("sph-gui: %d frames in %s/\n", recorder.frames(), recorder.dir().c_str());
+  return rc;
+}
+
+}  // namespace sph::gui

@@ -1,0 +1,59 @@
+#include "gui_options.h"
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+
+namespace sph::gui {
+
+bool parse_size(const std::string& text, int* w, int* h) {
+  char x = 0, extra = 0;
+  return std::sscanf(text.c_str(), "%d%c%d%c", w, &x, h, &extra) == 3 && x == 'x' && *w > 0 && *h > 0;
+}
+
+int parse_options(int argc, char** argv, GuiOptions* out) {
+  GuiOptions& o = *out;
+  CLI::App app{"sph-gui: the SPH sandbox on the desktop. The engine steps on its own thread; change the\n"
+               "parameters while it runs, colour by any field, compare with the exact solution.\n"
+               "Exit codes: 0 ok, 1 no display or GL 3.3, 2 usage error, 3 invalid scene, 4 I/O error."};
+  std::string size;
+  app.add_option("--scene", o.scene, "built-in scene name (see `sph list`) or JSON scene file")->capture_default_str();
+  app.add_option("--set", o.sets, "override a parameter: key=value (repeatable), e.g. scene.count=100000");
+  app.add_option("--screenshot", o.screenshot, "write a PNG of the whole window at the last frame");
+  app.add_option("--quit-after-frames", o.quit_after_frames, "exit after N displayed frames")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--size", size, "window size WIDTHxHEIGHT (default 1600x900, clamped to the screen)");
+  app.add_option("--threads", o.threads, "engine OpenMP threads (default: all cores but one)")
+      ->check(CLI::Range(0, 1024));
+  app.add_option("--max-fps", o.max_fps, "display frame-rate cap, 0 = none")->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--view-fps", o.view_fps, "draw new snapshots at most this often (and in at most a third of the time), 0 = no limit")
+      ->check(CLI::NonNegativeNumber)->capture_default_str();
+  app.add_flag("--paused", o.paused, "start paused");
+  app.add_flag("--always-redraw", o.always_redraw,
+               "render every frame, even when nothing on screen changed (to measure the drawing cost)");
+  app.add_option("--record", o.record, "record PNG frames (frame_00000.png, ...) into this directory");
+  app.add_option("--record-every", o.record_every, "simulated time between recorded frames")
+      ->check(CLI::PositiveNumber)->capture_default_str();
+  app.add_option("--record-size", o.record_size, "recorded frame size WIDTHxHEIGHT")->capture_default_str();
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return 2;
+  }
+  if (!size.empty() && !parse_size(size, &o.width, &o.height)) {
+    std::fprintf(stderr, "sph-gui: --size %s: expected WIDTHxHEIGHT, e.g. 1600x900\n", size.c_str());
+    return 2;
+  }
+  int w = 0, h = 0;
+  if (!parse_size(o.record_size, &w, &h) || w % 2 || h % 2) {
+    std::fprintf(stderr, "sph-gui: --record-size %s: expected even WIDTHxHEIGHT, e.g. 1280x720\n",
+                 o.record_size.c_str());
+    return 2;
+  }
+  return -1;
+}
+
+}  // namespace sph::gui

@@ -1,0 +1,32 @@
+// Command line of sph-gui: what to load, how big, and the scripting hooks used by CI (screenshot,
+// quit after N frames) and by measurements (engine threads, frame-rate cap).
+#pragma once
+#include <string>
+#include <vector>
+
+namespace sph::gui {
+
+struct GuiOptions {
+  std::string scene = "sod";         ///< built-in scene name or JSON scene file
+  std::vector<std::string> sets;     ///< --set key=value overrides, as in `sph run`
+  std::string screenshot;            ///< PNG of the whole window, taken at the last frame
+  int quit_after_frames = 0;         ///< exit after this many displayed frames (0 = run until closed)
+  int width = 1600, height = 900;    ///< window size [px] (clamped to the screen)
+  int threads = 0;                   ///< engine OpenMP threads; 0 = all cores but one (at least 1)
+  double max_fps = 60.0;             ///< display frame-rate cap [1/s]; 0 = uncapped
+  double view_fps = 60.0;            ///< new snapshots drawn at most this often [1/s]; 0 = no limit
+                                     ///< (also at most a third of the time goes to drawing the view)
+  bool paused = false;               ///< start paused
+  bool always_redraw = false;        ///< draw every frame even when nothing on screen changes (benchmarks)
+  std::string record;                ///< start recording PNG frames into this directory
+  double record_every = 0.01;        ///< simulated time between recorded frames [time units]
+  std::string record_size = "1280x720";  ///< recorded frame size WIDTHxHEIGHT
+};
+
+/// Parses argv. Returns -1 to go on, or the exit code (0 after --help, 2 on a usage error).
+int parse_options(int argc, char** argv, GuiOptions* out);
+
+/// "1280x720" -> 1280, 720; false if malformed or not positive.
+bool parse_size(const std::string& text, int* w, int* h);
+
+}  // namespace sph::gui

@@ -1,0 +1,95 @@
+// The GUI's side of the engine <-> app channels (main thread only): its own edit copies of the params,
+// scene values and view settings; what it has asked the stepper for; and the frame it is showing.
+// Panels read and edit this; they reach the engine only through the methods below.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "sph/config.h"
+#include "sph/stepper.h"
+#include "view_settings.h"
+
+namespace sph::gui {
+
+/// Things a panel asks for that the main loop does at the end of the frame (they need GL or files).
+struct Requests {
+  bool screenshot = false;    ///< write the whole window to a PNG
+  bool start_recording = false;
+  bool stop_recording = false;
+};
+
+class GuiState {
+ public:
+  GuiState(Stepper& stepper, const RunConfig& initial);
+
+  /// Takes the newest frame (once per display frame) and re-syncs the edit copies after a rebuild.
+  void update();
+  /// The frame shown this display frame (nullptr until the first World is built).
+  const StepperFrame* frame() const { return frame_; }
+  /// The frame is new this display frame (its serial changed).
+  bool fresh() const { return fresh_; }
+  /// A load or reset has been sent and its World is not built yet.
+  bool building() const { return awaiting_ != 0; }
+  /// The scene being built or shown.
+  const std::string& scene_name() const { return scene_name_; }
+
+  // --- params (channel 1) ----------------------------------------------------------------------------
+  Params edit;              ///< what the parameter widgets show
+  SceneValues values;       ///< what the scene-value widgets show
+  /// Hands `edit` to the mailbox; fields that need a reset keep the engine's values until then.
+  void post_live();
+  /// Structural edits not yet applied: "gamma 1.4 -> 1.67", "scene.n_left 400 -> 800".
+  std::vector<std::string> pending() const;
+
+  // --- commands (channel 2) --------------------------------------------------------------------------
+  /// Rebuilds the World at t = 0 with the edited params and scene values (applies pending edits).
+  void reset();
+  /// Loads another scene (its defaults, or a file's); the edit copies follow once it is built.
+  void load(const RunConfig& cfg);
+  void pause() { stepper_.pause(); }
+  void resume() { stepper_.resume(); }
+  void step_once() { stepper_.step_once(); }
+  void set_real_time_factor(double f);
+  void set_stop_at_end(bool on);
+  void set_record_interval(double every) { stepper_.set_record_interval(every); }
+  double real_time_factor = 0.0;   ///< as last sent (0 = as fast as possible)
+  bool stop_at_end = true;         ///< as last sent
+
+  // --- view and user requests --------------------------------------------------------------------------
+  render::ViewSettings view;
+  Requests requests;
+  std::string file_path;           ///< scene file path typed in the scene panel
+  std::string message;             ///< last notice (file written, load error)
+  bool message_is_error = false;
+  void notify(std::string text, bool error = false);
+
+  // recording settings (the main loop's Recorder does the writing)
+  bool recording = false;
+  std::string record_dir = "frames";
+  double record_every = 0.01;
+  int record_width = 1280, record_height = 720;
+
+  std::uint64_t acknowledged_divergence = 0;  ///< world_serial whose divergence dialog was closed
+  std::string param_error;                    ///< why the last typed parameter value was refused
+
+  /// Kernel explorer choices.
+  struct KernelView {
+    bool follow = true;                    ///< show the run's kernel
+    KernelType kernel = KernelType::M4;    ///< else this one
+    int dim = 0;                           ///< 1, 2, 3; 0 = the scene's dimension
+  } kernel_view;
+
+ private:
+  void resync_from(const StepperFrame& f);
+  Stepper& stepper_;
+  const StepperFrame* frame_ = nullptr;
+  std::uint64_t serial_ = 0, world_serial_ = 0;
+  std::uint64_t resync_version_ = 1;  // take params/values from the first frame that adopted this version
+  std::uint64_t awaiting_ = 1;        // a rebuild with this params version is on its way
+  std::string scene_name_;
+  std::string last_error_;            // the frame error last reported
+  bool fresh_ = false;
+};
+
+}  // namespace sph::gui

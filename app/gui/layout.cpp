@@ -1,0 +1,26 @@
+#include "layout.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sph::gui {
+
+Layout compute_layout(int width, int height, float line_height) {
+  const float W = static_cast<float>(width), H = static_cast<float>(height);
+  Layout L;
+  const float status_h = std::round(line_height + 12.f);
+  const float controls_w = std::round(std::clamp(0.26f * W, 330.f, 430.f));
+  const float body_h = H - status_h;
+  const float right_w = W - controls_w;
+  const float view_h = std::round(std::max(0.f, body_h * 0.63f));
+  const float bottom_h = body_h - view_h;
+  const float diag_w = std::round(right_w * 0.56f);
+  L.controls = {0.f, 0.f, controls_w, body_h};
+  L.view = {controls_w, 0.f, right_w, view_h};
+  L.diagnostics = {controls_w, view_h, diag_w, bottom_h};
+  L.kernel = {controls_w + diag_w, view_h, right_w - diag_w, bottom_h};
+  L.status = {0.f, body_h, W, status_h};
+  return L;
+}
+
+}  // namespace sph::gui

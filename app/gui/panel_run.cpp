@@ -1,0 +1,80 @@
+// Run controls: play/pause, single step, reset (which applies the structural edits), pacing (as fast
+// as possible or a real-time factor), stop at t_end, screenshot and PNG-sequence recording.
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include "panels.h"
+
+namespace sph::gui {
+
+void panel_run(GuiState& s) {
+  const StepperFrame* f = s.frame();
+  const bool running = f && f->running;
+  const float bw = (ImGui::GetContentRegionAvail().x - 2.f * ImGui::GetStyle().ItemSpacing.x) / 3.f;
+  if (ImGui::Button(running ? "Pause" : "Play", ImVec2(bw, 0))) running ? s.pause() : s.resume();
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Space");
+  ImGui::SameLine();
+  if (ImGui::Button("Step", ImVec2(bw, 0))) s.step_once();
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Pause and advance exactly one step (S)");
+  ImGui::SameLine();
+  const std::vector<std::string> pending = s.pending();
+  if (!pending.empty()) ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.65f, 0.40f, 0.08f, 1.f));
+  if (ImGui::Button(pending.empty() ? "Reset" : "Reset*", ImVec2(bw, 0))) s.reset();
+  if (!pending.empty()) ImGui::PopStyleColor();
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Rebuild the scene at t = 0 with the current parameters and scene values (R)");
+  for (const std::string& p : pending) ImGui::TextColored(ImVec4(1.f, 0.7f, 0.3f, 1.f), "needs reset: %s", p.c_str());
+
+  // Keyboard shortcuts (when no text field has the keyboard). ImGui 1.86 indexes keys by the backend's
+  // codes; GLFW's letter keys are their upper-case ASCII codes.
+  if (!ImGui::GetIO().WantCaptureKeyboard) {
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space), false)) running ? s.pause() : s.resume();
+    if (ImGui::IsKeyPressed('S')) s.step_once();
+    if (ImGui::IsKeyPressed('R', false)) s.reset();
+  }
+
+  bool realtime = s.real_time_factor > 0.0;
+  if (ImGui::Checkbox("real time x", &realtime)) s.set_real_time_factor(realtime ? 0.1 : 0.0);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Pace the engine: simulated seconds per wall-clock second.\nOff: as fast as possible.");
+  ImGui::SameLine();
+  if (!realtime) ImGui::BeginDisabled();
+  double rtf = realtime ? s.real_time_factor : 0.1;
+  ImGui::SetNextItemWidth(-1.f);
+  const double lo = 1e-4, hi = 10.0;
+  if (ImGui::SliderScalar("##rtf", ImGuiDataType_Double, &rtf, &lo, &hi, "%.4g sim s / s",
+                          ImGuiSliderFlags_Logarithmic) && realtime)
+    s.set_real_time_factor(rtf);
+  if (!realtime) ImGui::EndDisabled();
+  bool stop = s.stop_at_end;
+  if (ImGui::Checkbox("stop at t_end", &stop)) s.set_stop_at_end(stop);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Pause when t reaches the t_end parameter; Play continues past it.");
+
+  if (ImGui::Button("Screenshot")) s.requests.screenshot = true;
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("The whole window as a PNG in the working directory (F12)");
+  ImGui::SameLine();
+  if (!s.recording) {
+    if (ImGui::Button("Record")) s.requests.start_recording = true;
+  } else {
+    ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.7f, 0.15f, 0.15f, 1.f));
+    if (ImGui::Button("Stop recording")) s.requests.stop_recording = true;
+    ImGui::PopStyleColor();
+  }
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("PNG frames of the particle view at fixed simulated-time intervals:\n"
+                      "DIR/frame_00000.png, ... (the same files as `sph run --frames`)");
+  ImGui::SameLine();
+  if (!ImGui::TreeNode("recording settings")) return;
+  if (s.recording) ImGui::BeginDisabled();
+  ImGui::InputText("dir", &s.record_dir);
+  ImGui::InputDouble("every", &s.record_every, 0.0, 0.0, "%.4g");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("simulated time between recorded frames [time units]");
+  int size[2] = {s.record_width, s.record_height};
+  if (ImGui::InputInt2("size", size)) {
+    s.record_width = std::max(16, size[0] & ~1);
+    s.record_height = std::max(16, size[1] & ~1);
+  }
+  if (s.recording) ImGui::EndDisabled();
+  ImGui::TreePop();
+}
+
+}  // namespace sph::gui

@@ -1,0 +1,78 @@
+// Scene picker: every built-in scene, or a JSON scene file; then the scene's own values (particle
+// counts, initial states), which need a rebuild: edited here, applied by Reset.
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "panels.h"
+
+namespace sph::gui {
+
+void panel_scene(GuiState& s) {
+  const StepperFrame* f = s.frame();
+  const SceneSpec* current = f ? f->config.scene : nullptr;
+  const std::string preview = current ? current->name + "  (" + std::to_string(current->dim) + "D)" : "(loading)";
+  if (ImGui::BeginCombo("scene", preview.c_str())) {
+    for (const SceneSpec& spec : scene_registry()) {
+      const std::string item = spec.name + "  (" + std::to_string(spec.dim) + "D)";
+      if (ImGui::Selectable(item.c_str(), &spec == current)) {
+        s.load(RunConfig::from_scene(spec.name));
+        s.notify("loading " + spec.name);
+      }
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s\n%s", spec.category.c_str(), spec.description.c_str());
+    }
+    ImGui::EndCombo();
+  }
+  if (current) {
+    ImGui::PushTextWrapPos(0.f);
+    ImGui::TextDisabled("%s: %s", current->category.c_str(), current->description.c_str());
+    ImGui::PopTextWrapPos();
+  }
+  ImGui::InputTextWithHint("##file", "assets/scenes/sod.json", &s.file_path);
+  ImGui::SameLine();
+  if (ImGui::Button("Open file") && !s.file_path.empty()) {
+    try {
+      s.load(RunConfig::load(s.file_path));
+      s.notify("loading " + s.file_path);
+    } catch (const std::exception& e) {
+      s.notify(e.what(), true);
+    }
+  }
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("A JSON scene file: {\"scene\": NAME, \"params\": {key: value, ...}}");
+  if (s.message_is_error && !s.message.empty()) {
+    ImGui::PushTextWrapPos(0.f);
+    ImGui::TextColored(ImVec4(1.f, 0.45f, 0.45f, 1.f), "%s", s.message.c_str());
+    ImGui::PopTextWrapPos();
+  }
+
+  if (!current || current->params.empty()) return;
+  const std::size_t changed = std::count_if(s.values.begin(), s.values.end(), [&](const auto& kv) {
+    const auto it = f->config.values.find(kv.first);
+    return it == f->config.values.end() || it->second != kv.second;
+  });
+  const std::string title = "scene values (needs reset)" + (changed ? "  " + std::to_string(changed) + " changed" : "");
+  if (!ImGui::TreeNodeEx("scene values", changed ? ImGuiTreeNodeFlags_DefaultOpen : 0, "%s", title.c_str())) return;
+  for (const SceneParam& sp : current->params) {
+    auto it = s.values.find(sp.name);
+    if (it == s.values.end()) continue;
+    const auto applied = f->config.values.find(sp.name);
+    const bool pending = applied == f->config.values.end() || applied->second != it->second;
+    if (pending) ImGui::PushStyleColor(ImGuiCol_FrameBg, ImVec4(0.45f, 0.30f, 0.08f, 1.f));
+    double v = it->second;
+    const std::string label = sp.name + (pending ? "  (reset!)" : "");
+    if (ImGui::InputDouble(label.c_str(), &v, 0.0, 0.0, sp.integer ? "%.0f" : "%.6g",
+                           ImGuiInputTextFlags_EnterReturnsTrue)) {
+      if (sp.integer) v = std::round(v);
+      it->second = std::min(sp.max, std::max(sp.min, v));
+    }
+    if (pending) ImGui::PopStyleColor();
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("scene.%s: %s\nrange [%g, %g]%s\nneeds reset: the particles are placed again (Enter, then Reset)",
+                        sp.name.c_str(), sp.description.c_str(), sp.min, sp.max, sp.integer ? ", integer" : "");
+  }
+  ImGui::TreePop();
+}
+
+}  // namespace sph::gui

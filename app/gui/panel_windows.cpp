@@ -1,0 +1,45 @@
+// The fixed tiling of ImGui windows (see layout.h): controls column, diagnostics, kernel explorer,
+// status line, and the divergence dialog over them.
+#include <imgui.h>
+
+#include "panels.h"
+
+namespace sph::gui {
+namespace {
+
+void place(const Rect& r) {
+  ImGui::SetNextWindowPos(ImVec2(r.x, r.y), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(r.w, r.h), ImGuiCond_Always);
+}
+
+}  // namespace
+
+void draw_panels(GuiState& s, const Layout& L, const FrameStats& stats) {
+  // The tiled windows draw no background of their own: the window is cleared to the panel colour before
+  // ImGui draws (a software rasteriser pays per textured pixel; a clear is nearly free).
+  constexpr ImGuiWindowFlags fixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBackground;
+  place(L.controls);
+  if (ImGui::Begin("SPH sandbox", nullptr, fixed)) {
+    ImGui::PushItemWidth(-ImGui::GetFontSize() * 7.5f);
+    if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) panel_scene(s);
+    if (ImGui::CollapsingHeader("Run", ImGuiTreeNodeFlags_DefaultOpen)) panel_run(s);
+    if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) panel_params(s);
+    if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) panel_display(s);
+    ImGui::PopItemWidth();
+  }
+  ImGui::End();
+  place(L.diagnostics);
+  if (ImGui::Begin("Diagnostics", nullptr, fixed)) panel_diagnostics(s);
+  ImGui::End();
+  place(L.kernel);
+  if (ImGui::Begin("Kernel explorer  (seed 000, Figs. 3.1-3.4)", nullptr, fixed)) panel_kernel(s);
+  ImGui::End();
+  place(L.status);
+  if (ImGui::Begin("##status", nullptr, fixed | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar))
+    status_line(s, stats);
+  ImGui::End();
+  divergence_modal(s);
+}
+
+}  // namespace sph::gui

@@ -1,0 +1,23 @@
+// The ImGui panels, one file each. Each draws into the current window (or opens its own, for the modal)
+// and reaches the engine only through GuiState.
+#pragma once
+#include "gui_state.h"
+#include "layout.h"
+
+namespace sph::gui {
+
+class FrameStats;
+
+/// All tiled windows at their places in the layout, and the divergence dialog.
+void draw_panels(GuiState& s, const Layout& layout, const FrameStats& stats);
+
+void panel_scene(GuiState& s);        ///< scene picker, JSON file, scene values (needs reset)
+void panel_run(GuiState& s);          ///< play/pause/step/reset, pacing, screenshot, recording
+void panel_params(GuiState& s);       ///< live run parameters from sph::param_table()
+void panel_display(GuiState& s);      ///< colour by, colour map, range, particle size, camera
+void panel_diagnostics(GuiState& s);  ///< energies, momentum, L1 error against time
+void panel_kernel(GuiState& s);       ///< kernel explorer: W(q), dW/dq against the Gaussian
+void status_line(GuiState& s, const FrameStats& stats);  ///< t, dt, steps/s, neighbours, h-iterations
+void divergence_modal(GuiState& s);   ///< after a NaN/inf: which particle and step, and a reset button
+
+}  // namespace sph::gui

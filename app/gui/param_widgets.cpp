@@ -1,0 +1,96 @@
+#include "param_widgets.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+namespace sph::gui {
+namespace {
+
+std::string format(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+enum class Widget { Linear, Logarithmic, Text };
+
+/// A short range from 0 (eta, alpha) gets a linear slider; a positive range over decades (h_tol,
+/// visc_eps, cfl) a logarithmic one; anything open-ended (dt, t_end, iteration caps) a text field.
+Widget widget_for(const ParamInfo& info) {
+  if (info.max > 20.0 || info.min < 0.0) return Widget::Text;
+  if (info.min > 0.0 && info.max / info.min > 100.0) return Widget::Logarithmic;
+  return Widget::Linear;
+}
+
+}  // namespace
+
+void param_tooltip(const ParamInfo& info) {
+  if (!ImGui::IsItemHovered()) return;
+  ImGui::BeginTooltip();
+  ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.f);
+  ImGui::Text("%.*s", static_cast<int>(info.key.size()), info.key.data());
+  ImGui::TextWrapped("%.*s", static_cast<int>(info.description.size()), info.description.data());
+  if (info.choices.empty())
+    ImGui::TextDisabled("unit: %.*s    range: [%g, %g]", static_cast<int>(info.unit.size()), info.unit.data(), info.min,
+                        info.max);
+  if (info.live)
+    ImGui::TextColored(ImVec4(0.5f, 0.9f, 0.5f, 1.f), "live: takes effect at the next step");
+  else
+    ImGui::TextColored(ImVec4(1.f, 0.7f, 0.3f, 1.f), "needs reset: applied when you press Reset");
+  ImGui::PopTextWrapPos();
+  ImGui::EndTooltip();
+}
+
+bool param_widget(const ParamInfo& info, Params& p, bool pending, std::string* err) {
+  const std::string key(info.key);
+  const std::string label = key + (info.live ? "" : pending ? "  (reset!)" : "  (reset)");
+  const std::string current = info.get(p);
+  bool changed = false;
+  std::string text;
+  if (pending) ImGui::PushStyleColor(ImGuiCol_FrameBg, ImVec4(0.45f, 0.30f, 0.08f, 1.f));
+  if (!info.choices.empty()) {
+    if (ImGui::BeginCombo(label.c_str(), current.c_str())) {
+      for (const std::string& c : info.choices) {
+        if (ImGui::Selectable(c.c_str(), c == current) && c != current) {
+          text = c;
+          changed = true;
+        }
+      }
+      ImGui::EndCombo();
+    }
+  } else {
+    double v = std::strtod(current.c_str(), nullptr);
+    switch (widget_for(info)) {
+      case Widget::Linear:
+        changed = ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &v, &info.min, &info.max, "%.4g");
+        break;
+      case Widget::Logarithmic: {
+        // Slide log10(v); show v itself (the "format" is the formatted value: it holds no conversion).
+        // ImGui 1.86's own logarithmic sliders clamp values below 10^-precision, e.g. h_tol = 1e-10.
+        const double lo = std::log10(info.min), hi = std::log10(info.max);
+        double u = std::log10(std::max(v, info.min));
+        char shown[32];
+        std::snprintf(shown, sizeof shown, "%.3g", v);
+        changed = ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &u, &lo, &hi, shown);
+        if (changed) v = std::pow(10.0, u);
+        break;
+      }
+      case Widget::Text:
+        changed = ImGui::InputDouble(label.c_str(), &v, 0.0, 0.0, "%.6g", ImGuiInputTextFlags_EnterReturnsTrue);
+        break;
+    }
+    if (changed) text = format(v);
+  }
+  if (pending) ImGui::PopStyleColor();
+  param_tooltip(info);
+  if (!changed || text == current) return false;
+  if (!info.set(p, text, *err)) return false;
+  err->clear();
+  return true;
+}
+
+}  // namespace sph::gui

@@ -1,0 +1,31 @@
+// Recording: the frames the stepper marks (record_index >= 0, at fixed simulated-time intervals) are
+// rendered off-screen at a fixed size and written as dir/frame_00000.png, frame_00001.png, ... - the
+// same names, size and renderer as the headless `sph run --frames`.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "particle_view.h"
+
+namespace sph::gui {
+
+class Recorder {
+ public:
+  /// Creates the directory and restarts the numbering; false with *err if it cannot.
+  bool start(const std::string& dir, std::string* err);
+  void stop() { active_ = false; }
+  bool active() const { return active_; }
+  /// Renders and writes the next frame.
+  bool write(ParticleView& view, const sph::Snapshot& snap, const render::ViewSettings& settings, int width,
+             int height, std::string* err);
+  int frames() const { return frames_; }
+  const std::string& dir() const { return dir_; }
+
+ private:
+  bool active_ = false;
+  std::string dir_;
+  int frames_ = 0;
+  std::vector<std::uint8_t> pixels_;
+};
+
+}  // namespace sph::gui

@@ -1,0 +1,42 @@
+// One line along the bottom: where the run is (t, dt, step), how fast the engine goes (steps/s,
+// particle-steps/s), what the density solve did (mean neighbours, h-iterations), the display rate,
+// and the last notice.
+#include <imgui.h>
+
+#include <cstdio>
+
+#include "frame_stats.h"
+#include "panels.h"
+
+namespace sph::gui {
+
+void status_line(GuiState& s, const FrameStats& stats) {
+  const StepperFrame* f = s.frame();
+  if (f == nullptr) {
+    ImGui::TextUnformatted("building the scene ...");
+    return;
+  }
+  const char* state = f->diverged ? "DIVERGED" : f->running ? "running" : f->at_end ? "at t_end" : "paused";
+  const ImVec4 colour = f->diverged ? ImVec4(1.f, 0.35f, 0.35f, 1.f)
+                        : f->running ? ImVec4(0.5f, 0.9f, 0.5f, 1.f)
+                                     : ImVec4(1.f, 0.8f, 0.35f, 1.f);
+  ImGui::TextColored(colour, "%-8s", state);
+  ImGui::SameLine();
+  const Snapshot& snap = f->snapshot;
+  ImGui::Text("t = %.5g   dt = %.3g   step %lld   |   %.4g steps/s   %.3g particle-steps/s   |   N = %zu   "
+              "<neighbours> %.1f   h-iterations %.2f (max %d)   |   display %.0f fps (%.0f drawn)",
+              snap.t, snap.dt, static_cast<long long>(snap.step), f->steps_per_second, f->particle_steps_per_second,
+              snap.count, f->density.mean_neighbours, f->density.mean_iterations, f->density.max_iterations,
+              stats.fps(), stats.drawn_fps());
+  if (f->record_every > 0.0) {
+    ImGui::SameLine();
+    ImGui::TextColored(ImVec4(1.f, 0.35f, 0.35f, 1.f), "   REC every %g", f->record_every);
+  }
+  if (!s.message.empty()) {
+    ImGui::SameLine();
+    ImGui::TextColored(s.message_is_error ? ImVec4(1.f, 0.45f, 0.45f, 1.f) : ImVec4(0.6f, 0.6f, 0.65f, 1.f), "   %s",
+                       s.message.c_str());
+  }
+}
+
+}  // namespace sph::gui

@@ -1,0 +1,113 @@
+#include "window.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+namespace sph::gui {
+namespace {
+
+void glfw_error(int code, const char* text) { std::fprintf(stderr, "sph-gui: GLFW error %d: %s\n", code, text); }
+
+/// A readable UI font for a projector: DejaVu Sans if the system has it, else ImGui's built-in one.
+void load_font() {
+  ImGuiIO& io = ImGui::GetIO();
+  const char* path = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec) && io.Fonts->AddFontFromFileTTF(path, 16.f) != nullptr) return;
+  io.Fonts->AddFontDefault();
+}
+
+void style() {
+  ImGui::StyleColorsDark();
+  ImGuiStyle& s = ImGui::GetStyle();
+  // Square corners: rounded ones cost a software rasteriser ~20% of the panels' drawing time.
+  s.WindowRounding = s.ChildRounding = s.PopupRounding = s.FrameRounding = s.GrabRounding = 0.f;
+  s.ScrollbarRounding = s.TabRounding = 0.f;
+  s.WindowBorderSize = 1.f;
+  s.ItemSpacing = ImVec2(8.f, 5.f);
+  s.Colors[ImGuiCol_WindowBg] = ImVec4(0.09f, 0.09f, 0.10f, 1.f);
+
+}
+
+}  // namespace
+
+std::unique_ptr<Window> Window::create(int width, int height, const char* title, std::string* err) {
+  std::unique_ptr<Window> w(new Window());
+  glfwSetErrorCallback(glfw_error);
+  if (!glfwInit()) {
+    *err = "cannot initialise GLFW (is there a display? try xvfb-run -a sph-gui ...)";
+    return nullptr;
+  }
+  w->glfw_ = true;
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  if (GLFWmonitor* m = glfwGetPrimaryMonitor()) {
+    if (const GLFWvidmode* mode = glfwGetVideoMode(m)) {
+      width = std::min(width, mode->width);
+      height = std::min(height, mode->height);
+    }
+  }
+  w->window_ = glfwCreateWindow(width, height, title, nullptr, nullptr);
+  if (w->window_ == nullptr) {
+    *err = "cannot create a window with an OpenGL 3.3 core context";
+    return nullptr;
+  }
+  glfwMakeContextCurrent(w->window_);
+  glfwSetWindowUserPointer(w->window_, w.get());
+  glfwSetWindowRefreshCallback(w->window_, [](GLFWwindow* win) {
+    static_cast<Window*>(glfwGetWindowUserPointer(win))->damaged_ = true;
+  });
+  glfwSwapInterval(1);  // vsync where there is one; the frame cap in FrameStats covers the rest
+
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  w->imgui_ = true;
+  ImGui::GetIO().IniFilename = nullptr;  // the layout is computed every frame: nothing to save
+  style();
+  load_font();
+  w->imgui_glfw_ = ImGui_ImplGlfw_InitForOpenGL(w->window_, true);
+  w->imgui_gl_ = w->imgui_glfw_ && ImGui_ImplOpenGL3_Init("#version 330 core");
+  if (!w->imgui_gl_) {
+    *err = "cannot initialise the ImGui GLFW/OpenGL3 backends";
+    return nullptr;
+  }
+  return w;
+}
+
+Window::~Window() {
+  if (imgui_gl_) ImGui_ImplOpenGL3_Shutdown();
+  if (imgui_glfw_) ImGui_ImplGlfw_Shutdown();
+  if (imgui_) ImGui::DestroyContext();
+  if (window_) glfwDestroyWindow(window_);
+  if (glfw_) glfwTerminate();
+}
+
+bool Window::should_close() const { return glfwWindowShouldClose(window_); }
+
+bool Window::take_damage() {
+  const bool d = damaged_;
+  damaged_ = false;
+  return d;
+}
+
+void Window::framebuffer_size(int* w, int* h) const { glfwGetFramebufferSize(window_, w, h); }
+
+void* Window::get_proc(const char* name) {
+  const GLFWglproc p = glfwGetProcAddress(name);
+  void* v = nullptr;
+  static_assert(sizeof(p) == sizeof(v));
+  std::memcpy(&v, &p, sizeof v);  // function -> object pointer, as dlsym does
+  return v;
+}
+
+}  // namespace sph::gui

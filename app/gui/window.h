@@ -1,0 +1,36 @@
+// The desktop window: GLFW with an OpenGL 3.3 core context, and Dear ImGui set up on it with the GLFW
+// and OpenGL3 backends (as in imgui's example_glfw_opengl3). One per program, on the main thread.
+#pragma once
+#include <memory>
+#include <string>
+
+struct GLFWwindow;
+
+namespace sph::gui {
+
+class Window {
+ public:
+  /// Opens a width x height window (clamped to the screen) titled `title`; nullptr with *err if there is
+  /// no display or no GL 3.3 core context.
+  static std::unique_ptr<Window> create(int width, int height, const char* title, std::string* err);
+  ~Window();
+  Window(const Window&) = delete;
+  Window& operator=(const Window&) = delete;
+
+  GLFWwindow* handle() const { return window_; }
+  bool should_close() const;
+  /// Framebuffer size [px] (what GL draws into and what a screenshot holds).
+  void framebuffer_size(int* w, int* h) const;
+  /// True once after the window system asked for a repaint (uncovered, resized, ...).
+  bool take_damage();
+  /// GL entry-point loader for sph::render::Renderer::init (glfwGetProcAddress).
+  static void* get_proc(const char* name);
+
+ private:
+  Window() = default;
+  GLFWwindow* window_ = nullptr;
+  bool glfw_ = false, imgui_ = false, imgui_glfw_ = false, imgui_gl_ = false;
+  bool damaged_ = true;
+};
+
+}  // namespace sph::gui

@@ -1,0 +1,104 @@
+// Checks on PNGs written by sph-gui (run by ctest after the program, see smoke.cmake):
+//   gui_image_check screenshot FILE   - the whole-window screenshot shows the panels (text and widgets on
+//                                       the left and below) and the particle view (coloured particles and
+//                                       the exact curve, drawn in the colour map's contrast colour);
+//   gui_image_check compare A B       - two renderings of the same frame match within a small tolerance.
+// Prints what it measured; exit code 0 if the checks pass.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#define STB_IMAGE_IMPLEMENTATION
+#define STB_IMAGE_STATIC
+#include <stb/stb_image.h>
+
+#include "colormap.h"
+
+namespace {
+
+struct Image {
+  int w = 0, h = 0;
+  unsigned char* px = nullptr;
+  explicit Image(const char* path) {
+    int n = 0;
+    px = stbi_load(path, &w, &h, &n, 3);
+    if (!px) std::fprintf(stderr, "cannot read %s\n", path);
+  }
+  ~Image() { stbi_image_free(px); }
+  const unsigned char* at(int x, int y) const { return px + 3 * (static_cast<std::size_t>(y) * w + x); }
+};
+
+/// Fraction of pixels in [x0,x1) x [y0,y1) (fractions of the size) for which pred(rgb) holds.
+template <class Pred>
+double fraction(const Image& im, double x0, double x1, double y0, double y1, Pred pred) {
+  const int a = static_cast<int>(x0 * im.w), b = static_cast<int>(x1 * im.w);
+  const int c = static_cast<int>(y0 * im.h), d = static_cast<int>(y1 * im.h);
+  long hit = 0, all = 0;
+  for (int y = c; y < d; ++y)
+    for (int x = a; x < b; ++x, ++all) hit += pred(im.at(x, y)) ? 1 : 0;
+  return all ? static_cast<double>(hit) / static_cast<double>(all) : 0.0;
+}
+
+bool check(const char* what, double value, double min) {
+  const bool ok = value >= min;
+  std::printf("%-58s %.4f (need >= %.4f) %s\n", what, value, min, ok ? "ok" : "FAIL");
+  return ok;
+}
+
+int screenshot(const char* path) {
+  const Image im(path);
+  if (!im.px) return 1;
+  std::printf("%s: %d x %d\n", path, im.w, im.h);
+  // Far from the dark background: light text, widget frames, plot lines.
+  auto lit = [](const unsigned char* p) { return p[0] + p[1] + p[2] > 3 * 70; };
+  // Saturated colour: colour-mapped particles, the exact curve.
+  auto colourful = [](const unsigned char* p) {
+    const int mx = std::max({int{p[0]}, int{p[1]}, int{p[2]}}), mn = std::min({int{p[0]}, int{p[1]}, int{p[2]}});
+    return mx - mn > 60;
+  };
+  const sph::render::Rgb c = sph::render::colormap_contrast(sph::render::Colormap::Viridis);
+  const int cr = static_cast<int>(std::lround(255 * c.r)), cg = static_cast<int>(std::lround(255 * c.g)),
+            cb = static_cast<int>(std::lround(255 * c.b));
+  auto exact = [&](const unsigned char* p) {
+    return std::abs(p[0] - cr) < 40 && std::abs(p[1] - cg) < 40 && std::abs(p[2] - cb) < 40;
+  };
+  bool ok = true;
+  ok &= check("controls column (left): text and widgets", fraction(im, 0.01, 0.20, 0.03, 0.90, lit), 0.04);
+  ok &= check("bottom panels (diagnostics, kernel): text and plots", fraction(im, 0.30, 0.99, 0.65, 0.93, lit), 0.03);
+  ok &= check("particle view (top right): colour-mapped particles", fraction(im, 0.30, 0.99, 0.02, 0.58, colourful), 0.01);
+  ok &= check("particle view: exact-curve colour", fraction(im, 0.30, 0.99, 0.02, 0.58, exact), 0.0005);
+  return ok ? 0 : 1;
+}
+
+int compare(const char* a_path, const char* b_path) {
+  const Image a(a_path), b(b_path);
+  if (!a.px || !b.px) return 1;
+  if (a.w != b.w || a.h != b.h) {
+    std::printf("sizes differ: %dx%d vs %dx%d\n", a.w, a.h, b.w, b.h);
+    return 1;
+  }
+  double sum = 0.0;
+  long off = 0;
+  const long n = static_cast<long>(a.w) * a.h;
+  for (long i = 0; i < 3 * n; ++i) {
+    const int d = std::abs(a.px[i] - b.px[i]);
+    sum += d;
+    off += d > 24 ? 1 : 0;
+  }
+  const double mean = sum / (3.0 * n), frac = static_cast<double>(off) / (3.0 * n);
+  std::printf("mean |difference| %.4f per channel (need <= 1.0); channels off by > 24: %.5f (need <= 0.002)\n", mean,
+              frac);
+  return mean <= 1.0 && frac <= 0.002 ? 0 : 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string mode = argc > 1 ? argv[1] : "";
+  if (mode == "screenshot" && argc == 3) return screenshot(argv[2]);
+  if (mode == "compare" && argc == 4) return compare(argv[2], argv[3]);
+  std::fprintf(stderr, "usage: gui_image_check screenshot FILE | compare A B\n");
+  return 2;
+}

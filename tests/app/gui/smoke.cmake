@@ -1,0 +1,23 @@
+# ctest driver for sph-gui under Xvfb. Variables: XVFB_RUN, GUI, CHECK, OUT, MODE (smoke | match), SPH.
+#   smoke: the issue's command line, then the screenshot checks;
+#   match: the GUI records the t = 0 frame of sod, the headless program renders the same frame, and the
+#          two PNGs are compared.
+file(REMOVE_RECURSE ${OUT})
+file(MAKE_DIRECTORY ${OUT})
+
+function(run)
+  execute_process(COMMAND ${ARGV} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err WORKING_DIRECTORY ${OUT})
+  message("$ ${ARGV}\n${out}${err}")
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "exit code ${rc}")
+  endif()
+endfunction()
+
+if(MODE STREQUAL "smoke")
+  run(${XVFB_RUN} -a ${GUI} --scene sod --screenshot ${OUT}/shot.png --quit-after-frames 90)
+  run(${CHECK} screenshot ${OUT}/shot.png)
+elseif(MODE STREQUAL "match")
+  run(${XVFB_RUN} -a ${GUI} --scene sod --paused --record ${OUT}/gui --record-size 1280x720 --quit-after-frames 60)
+  run(${SPH} run sod --until 0 --frames ${OUT}/headless --size 1280x720 --quiet)
+  run(${CHECK} compare ${OUT}/gui/frame_00000.png ${OUT}/headless/frame_00000.png)
+endif()
