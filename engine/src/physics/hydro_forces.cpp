@@ -20,6 +20,7 @@ void hydro_forces(const Kernel& K, const Params& prm, Particles& p, const Neighb
   std::vector<double>* dudt = energy ? &p[Field::EnergyRate] : nullptr;
   const double alpha = prm.alpha, beta = prm.beta, eps = prm.visc_eps, alpha_u = prm.alpha_u;
   const double support = K.support();
+  const double alpha_scale = std::max(1.0, alpha), beta_scale = std::max(1.0, 0.5 * beta);
 
 #pragma omp parallel for schedule(dynamic, 64) if (n >= kParallelMin)
   for (std::size_t i = 0; i < n; ++i) {
@@ -50,9 +51,11 @@ void hydro_forces(const Kernel& K, const Params& prm, Particles& p, const Neighb
         const double cm = 0.5 * (c[i] + c[j]);
         Pi = (-alpha * cm * mu + beta * mu * mu) / rhom;
       }
-      // signal speed for the CFL limit (Monaghan 1997): c_a + c_b - 2 w_ab for approaching pairs
+      // signal speed for the CFL limit (Monaghan 1997): c_ab - 2 w_ab for approaching pairs. The viscosity
+      // acts as a diffusion of strength ~ alpha c h (and beta |w| h), so beyond alpha = 1, beta = 2 the
+      // explicit limit shrinks in proportion: without this, alpha = 8 ran unstably with E_tot growing.
       const double w = vdotr * rinv;
-      vs = std::max(vs, 0.5 * (c[i] + c[j]) + std::max(0.0, -2.0 * w));
+      vs = std::max(vs, 0.5 * (c[i] + c[j]) * alpha_scale + beta_scale * std::max(0.0, -2.0 * w));
       const double f = -m[j] * (Ai * dWi + Aj * dWj + Pi * dWm) * rinv;  // times r_vec below
       ax += f * dx;
       ay += f * dy;
