@@ -78,7 +78,8 @@ class World {
   std::vector<double> h_limit_;
   double t_ = 0.0, dt_last_ = 0.0;
   std::int64_t step_ = 0, evaluations_ = 0;
-  bool current_ = false;  ///< accelerations belong to the current state
+  bool current_ = false;      ///< accelerations belong to the current state
+  bool rates_known_ = false;  ///< signal speeds from some evaluation under the current params (for dt)
 };
 
 }  // namespace sph

@@ -55,6 +55,7 @@ void World::set_params(const Params& p) {
   if (p.kernel != old.kernel) kernel_ = Kernel(p.kernel, p_.dim());
   if (p.integrator != old.integrator) integrator_ = make_integrator(p.integrator);
   current_ = false;  // forces depend on the parameters: re-evaluate before the next step
+  rates_known_ = false;
 }
 
 void World::evaluate() {
@@ -88,11 +89,14 @@ void World::evaluate() {
     hydro_forces(kernel_, prm, p_, nl_, mod.energy);
   }
   ++evaluations_;
+  rates_known_ = true;
 }
 
 double World::next_dt() {
   if (cfg_.params.dt > 0.0) return cfg_.params.dt;
-  if (!current_) { evaluate(); current_ = true; }
+  // The last evaluation's signal speeds set dt (for RK4 and the predictor-corrector that is a stage
+  // within the last step): evaluating again just for dt would double their cost.
+  if (!rates_known_) { evaluate(); current_ = true; }
   const std::size_t n = p_.size();
   const auto& h = p_[Field::H];
   const auto& vs = p_[Field::SignalSpeed];
