@@ -3,12 +3,11 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 
+#include "frame_size.h"
+
 namespace sph::gui {
 
-bool parse_size(const std::string& text, int* w, int* h) {
-  char x = 0, extra = 0;
-  return std::sscanf(text.c_str(), "%d%c%d%c", w, &x, h, &extra) == 3 && x == 'x' && *w > 0 && *h > 0;
-}
+bool parse_size(const std::string& text, int* w, int* h) { return render::parse_frame_size(text, w, h); }
 
 int parse_options(int argc, char** argv, GuiOptions* out) {
   GuiOptions& o = *out;

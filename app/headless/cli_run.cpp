@@ -14,6 +14,7 @@
 #include "sph/world.h"
 #ifdef SPH_HAVE_FRAMES
 #include "frame_recorder.h"
+#include "frame_size.h"
 #include "progress.h"
 #endif
 
@@ -40,8 +41,7 @@ std::unique_ptr<FrameRecorder> make_recorder(const RunOptions& opt) {
   fo.every = opt.every;
   if (!(opt.every > 0.0)) throw ConfigError("--every must be > 0");
   int w = 0, h = 0;
-  char x = 0;
-  if (std::sscanf(opt.size.c_str(), "%d%c%d", &w, &x, &h) != 3 || x != 'x' || w <= 0 || h <= 0)
+  if (!render::parse_frame_size(opt.size, &w, &h))
     throw ConfigError("--size " + opt.size + ": expected WIDTHxHEIGHT, e.g. 1280x720");
   fo.width = w;
   fo.height = h;

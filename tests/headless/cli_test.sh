@@ -75,6 +75,7 @@ if "$sph" run --help | grep -q -- "--frames"; then
     ok "frames $scene: 640x480" test "$(png_size "$work/fr_$scene/frame_00001.png")" = "640x480"
   done
   bad odd_size 2 "size" run sod --frames "$work/odd" --size 641x480
+  bad junk_size 2 "size" run sod --frames "$work/junk" --size 640x480junk
   bad unknown_field 2 "nope" run sod --frames "$work/nf" --color-by nope
 fi
 
