@@ -3,9 +3,11 @@
 // on the stepper's history resampled evenly in t).
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
+#include "curve_plot.h"
 #include "history_plot.h"
 #include "panels.h"
 
@@ -49,26 +51,46 @@ void panel_diagnostics(GuiState& s) {
   ImGui::TableNextColumn();
   if (ImGui::BeginTable("numbers", 2)) {
     row("E_kin", "%.6g", d.E_kin, "kinetic energy, sum 1/2 m v^2 (seed 000 eq. 3.4.4)");
-    row("E_int", "%.6g", d.E_int, "internal energy, sum m u");
+    row("E_int", "%.6g", d.E_int, "internal energy of the EOS: sum m u (gas), sum m e(rho) (Tait liquid)");
+    row("E_pot", "%.6g", d.E_pot, "potential energy of the body force and the Lennard-Jones walls");
     row("E_tot", "%.6g", d.E_tot, "total energy (seed 000 eq. 3.4.5): conserved without boundaries that do work");
     row("dE/E0", "%+.2e", dE, "relative change of E_tot since t = 0");
     row("|P|", "%.3e", P, "linear momentum, |sum m v| (seed 000 eq. 3.4.1); walls exchange momentum");
     row("|L|", "%.3e", L, "angular momentum about the origin, |sum r x m v| (seed 000 eq. 3.4.3)");
     row("v_max", "%.4g", d.v_max, "largest particle speed");
-    if (f->has_reference) {
-      row("L1 rho", "%.4e", f->errors.L1_rho, "mean |rho - rho_exact| over the particles in the scene's window");
-      row("L1 v", "%.4e", f->errors.L1_v, "mean |v - v_exact|");
-      row("L1 p", "%.4e", f->errors.L1_p, "mean |P - P_exact|");
-      row("L1 u", "%.4e", f->errors.L1_u, "mean |u - u_exact|");
-    }
+    if (d.correction_fallbacks > 0)
+      row("fallbacks", "%.0f", static_cast<double>(d.correction_fallbacks),
+          "particles whose gradient correction was ill-conditioned and fell back to L = I");
+    for (std::size_t k = 0; k < f->ref_columns.size() && k < f->ref_values.size(); ++k)
+      row(f->ref_columns[k].name.c_str(), "%.5g", f->ref_values[k], f->ref_columns[k].description.c_str());
     ImGui::EndTable();
   }
   ImGui::TableNextColumn();
-  const int n = f->has_reference ? 4 : 3;
+  const bool err_plot = f->ref_primary >= 0 && static_cast<std::size_t>(f->ref_primary) < f->ref_columns.size();
+  const int n = 3 + (err_plot ? 1 : 0) + static_cast<int>(f->ref_series.size());
   const float text_h = ImGui::GetTextLineHeightWithSpacing();
   const float avail = ImGui::GetContentRegionAvail().y - text_h;
   const float ph = std::max(24.f, avail / n - ImGui::GetStyle().ItemSpacing.y);
-  if (f->has_reference) plot(h, &HistorySample::L1_rho, "L1 rho", ph);
+  for (const auto& [measured, exact] : f->ref_series) {  // e.g. the drop's semi-axes against the exact ODE
+    if (static_cast<std::size_t>(std::max(measured, exact)) >= f->ref_columns.size()) continue;
+    std::vector<Curve> curves;
+    curves.push_back({f->ref_columns[static_cast<std::size_t>(measured)].name, IM_COL32(255, 200, 80, 255),
+                      resample_ref(h, static_cast<std::size_t>(measured), 240), false});
+    curves.push_back({f->ref_columns[static_cast<std::size_t>(exact)].name, IM_COL32(120, 200, 255, 255),
+                      resample_ref(h, static_cast<std::size_t>(exact), 240), true});
+    const std::string id = "series" + std::to_string(measured);
+    curve_plot(id.c_str(), "t", h.empty() ? 0.f : static_cast<float>(h.front().t),
+               h.empty() ? 1.f : static_cast<float>(h.back().t), curves, ImVec2(-1.f, ph));
+  }
+  if (err_plot) {
+    const std::size_t k = static_cast<std::size_t>(f->ref_primary);
+    const std::vector<float> y = resample_ref(h, k, 240);
+    char overlay[96];
+    std::snprintf(overlay, sizeof overlay, "%s = %.6g", f->ref_columns[k].name.c_str(),
+                  y.empty() ? 0.0 : static_cast<double>(y.back()));
+    ImGui::PlotLines("##err", y.data(), static_cast<int>(y.size()), 0, overlay, FLT_MAX, FLT_MAX,
+                     ImVec2(ImGui::GetContentRegionAvail().x, ph));
+  }
   plot(h, &HistorySample::E_tot, "E_tot", ph);
   plot(h, &HistorySample::E_kin, "E_kin", ph);
   plot(h, &HistorySample::P, "|P|", ph);

@@ -29,7 +29,7 @@ void panel_kernel(GuiState& s) {
   bool& follow = s.kernel_view.follow;
   KernelType& chosen = s.kernel_view.kernel;
   int& dim_choice = s.kernel_view.dim;
-  if (follow) chosen = s.edit.kernel;
+  if (follow) chosen = s.edit.kernel.type;
   const StepperFrame* f = s.frame();
   const int scene_dim = f && f->config.scene ? f->config.scene->dim : 1;
   const int dim = dim_choice > 0 ? dim_choice : scene_dim;

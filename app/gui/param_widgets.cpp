@@ -37,6 +37,8 @@ void param_tooltip(const ParamInfo& info) {
   if (info.choices.empty())
     ImGui::TextDisabled("unit: %.*s    range: [%g, %g]", static_cast<int>(info.unit.size()), info.unit.data(), info.min,
                         info.max);
+  if (!info.stage.empty())
+    ImGui::TextDisabled("used by %.*s", static_cast<int>(info.stage.size()), info.stage.data());
   if (info.live)
     ImGui::TextColored(ImVec4(0.5f, 0.9f, 0.5f, 1.f), "live: takes effect at the next step");
   else
@@ -45,7 +47,8 @@ void param_tooltip(const ParamInfo& info) {
   ImGui::EndTooltip();
 }
 
-bool param_widget(const ParamInfo& info, Params& p, bool pending, std::string* err) {
+bool param_widget(const ParamInfo& info, Params& p, bool pending, std::string* err,
+                  const std::vector<std::string>& allowed) {
   const std::string key(info.key);
   const std::string label = key + (info.live ? "" : pending ? "  (reset!)" : "  (reset)");
   const std::string current = info.get(p);
@@ -55,6 +58,7 @@ bool param_widget(const ParamInfo& info, Params& p, bool pending, std::string* e
   if (!info.choices.empty()) {
     if (ImGui::BeginCombo(label.c_str(), current.c_str())) {
       for (const std::string& c : info.choices) {
+        if (!allowed.empty() && std::find(allowed.begin(), allowed.end(), c) == allowed.end()) continue;
         if (ImGui::Selectable(c.c_str(), c == current) && c != current) {
           text = c;
           changed = true;

@@ -3,6 +3,7 @@
 // the description (with the seed equation), unit, range, and whether it is live or needs a reset.
 #pragma once
 #include <string>
+#include <vector>
 
 #include "sph/param_table.h"
 
@@ -14,6 +15,8 @@ void param_tooltip(const ParamInfo& info);
 /// One widget; true when a new value was written to p (through info.set, so range-checked). A value
 /// the table rejects leaves p unchanged and puts the reason in *err. `pending` marks a value that
 /// differs from what the engine runs with (needs reset).
-bool param_widget(const ParamInfo& info, Params& p, bool pending, std::string* err);
+/// For a choice, `allowed` (if not empty) restricts the options offered (a scene's slot options).
+bool param_widget(const ParamInfo& info, Params& p, bool pending, std::string* err,
+                  const std::vector<std::string>& allowed = {});
 
 }  // namespace sph::gui

@@ -19,7 +19,7 @@ int main(int argc, char** argv) {
   for (auto* sub : {check, run}) {
     sub->add_option("scene", opt.scene, "built-in scene name or JSON scene file")->required();
     sub->add_option("--set", opt.sets, "override a parameter: key=value (repeatable; see scene.json for keys)");
-    sub->add_option("--until", opt.until, "end time (overrides t_end)");
+    sub->add_option("--until", opt.until, "end time (overrides time.t_end)")->check(CLI::NonNegativeNumber);
   }
   run->add_option("--out", opt.out, "output directory: scene.json, diagnostics.csv, particles_*.csv, errors.csv");
   run->add_option("--threads", opt.threads, "OpenMP threads")->check(CLI::Range(1, 1024));

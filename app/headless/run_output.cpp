@@ -1,5 +1,6 @@
 #include "run_output.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
@@ -24,9 +25,15 @@ RunOutput::RunOutput(const std::string& dir, const World& world) : dir_(dir) {
         << diagnostics_csv_header() << "\n";
   if (world.has_reference()) {
     errors_ = open_file(dir + "/errors.csv");
-    errors_ << "# L1 = mean over particles with x in [" << world.reference()->window_lo() << ", "
-            << world.reference()->window_hi() << "] of |f - f_exact|; exact Riemann solution\n"
-            << errors_csv_header() << "\n";
+    errors_ << "# " << world.reference()->description() << "\n" << errors_csv_header(world.reference_columns()) << "\n";
+  }
+  // particle columns: id, position, velocity, then the scene's state fields, then the kind if it has walls
+  for (Field f : {Field::Mass, Field::Density, Field::Pressure, Field::Energy, Field::H})
+    if (world.particles().has(f)) columns_.push_back(f);
+  for (std::size_t k = 0; k < kFieldCount; ++k) {
+    const Field f = static_cast<Field>(k);
+    if (world.particles().has(f) && info(f).csv && std::find(columns_.begin(), columns_.end(), f) == columns_.end())
+      columns_.push_back(f);
   }
 }
 
@@ -42,20 +49,29 @@ void RunOutput::write_particles(const World& world) {
   std::ofstream f = open_file(path);
   const Particles& p = world.particles();
   f << "# t = " << world.time() << ", step " << world.steps() << "\n";
-  f << "id,x,y,z,vx,vy,vz,m,rho,p,u,h\n";
-  const bool has_p = p.has(Field::Pressure), has_u = p.has(Field::Energy);
-  char line[512];
+  const bool walls = p.fluid() < p.size();
+  f << "id,x,y,z,vx,vy,vz";
+  for (Field c : columns_) f << "," << info(c).key;
+  f << (walls ? ",kind\n" : "\n");
+  std::string line;
+  char num[32];
   for (std::size_t i = 0; i < p.size(); ++i) {
-    std::snprintf(line, sizeof line, "%lld,%.15g,%.15g,%.15g,%.15g,%.15g,%.15g,%.15g,%.15g,%.15g,%.15g,%.15g\n",
-                  static_cast<long long>(p.id[i]), p.x[0][i], p.x[1][i], p.x[2][i], p.v[0][i], p.v[1][i], p.v[2][i],
-                  p[Field::Mass][i], p[Field::Density][i], has_p ? p[Field::Pressure][i] : 0.0,
-                  has_u ? p[Field::Energy][i] : 0.0, p[Field::H][i]);
+    line = std::to_string(p.id[i]);
+    auto put = [&](double v) {
+      std::snprintf(num, sizeof num, ",%.15g", v);
+      line += num;
+    };
+    for (int k = 0; k < 3; ++k) put(p.x[k][i]);
+    for (int k = 0; k < 3; ++k) put(p.v[k][i]);
+    for (Field c : columns_) put(p[c][i]);
+    if (walls) line += p.is_wall(i) ? ",1" : ",0";
+    line += '\n';
     f << line;
   }
   if (!f) throw IoError("cannot write " + path);
   ++files_;
   if (world.has_reference()) {
-    errors_ << errors_csv_row(world.errors()) << "\n";
+    errors_ << errors_csv_row(world.time(), world.reference_values()) << "\n";
     if (!errors_) throw IoError("cannot write " + dir_ + "/errors.csv");
   }
 }

@@ -2,6 +2,7 @@
 #pragma once
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "sph/world.h"
 
@@ -22,6 +23,7 @@ class RunOutput {
  private:
   std::string dir_;
   std::ofstream diag_, errors_;
+  std::vector<Field> columns_;  ///< the fields of the particle files, after id, x and v
   int files_ = 0;
 };
 

@@ -13,14 +13,16 @@ SceneSpec box_base() {
   SceneSpec s;
   s.category = "gas dynamics / periodic box (seed 000 §4.1)";
   s.dim = 2;
-  s.modules.viscosity = false;
-  s.defaults.t_end = 30.0;
-  s.defaults.dt_out = 1.0;
+  s.defaults.physics.viscosity = ViscType::None;
+  s.defaults.time.t_end = 30.0;
+  s.defaults.time.dt_out = 1.0;
+  s.allow(Slot::Eos, {"ideal_gas", "isothermal"});
+  s.allow(Slot::Walls, {"none"});
   return s;
 }
 
-SceneSetup periodic_domain(Particles p) {
-  SceneSetup s{std::move(p), {}};
+SceneSetup periodic_domain(Particles p, double spacing) {
+  SceneSetup s{std::move(p), {}, spacing, 0.0};
   s.domain.lo = {0, 0, 0};
   s.domain.hi = {1, 1, 1};
   s.domain.bc = {Boundary::Periodic, Boundary::Periodic, Boundary::Open};
@@ -30,7 +32,7 @@ SceneSetup periodic_domain(Particles p) {
 /// n x n lattice at cell centres, mass m, u = u0; h guess from the lattice density.
 SceneSetup lattice(const SceneSpec& spec, const Params& prm, const SceneValues& v) {
   const auto n = static_cast<std::size_t>(v.at("n_side"));
-  Particles p = make_particles(spec, n * n);
+  Particles p = make_particles(prm, spec.dim, n * n);
   const double dx = 1.0 / static_cast<double>(n), eta = effective_eta(prm, 2);
   for (std::size_t j = 0; j < n; ++j)
     for (std::size_t i = 0; i < n; ++i) {
@@ -39,9 +41,9 @@ SceneSetup lattice(const SceneSpec& spec, const Params& prm, const SceneValues& 
       p.x[1][k] = (j + 0.5) * dx;
       p[Field::Mass][k] = v.at("mass");
       p[Field::H][k] = eta * dx;
-      p[Field::Energy][k] = v.at("u0");
+      if (p.has(Field::Energy)) p[Field::Energy][k] = v.at("u0");
     }
-  return periodic_domain(std::move(p));
+  return periodic_domain(std::move(p), dx);
 }
 
 std::vector<SceneParam> lattice_params(double n_side) {
@@ -82,14 +84,14 @@ SceneSpec box_random_scene() {
   SceneSpec s = box_base();
   s.name = "box_random";
   s.description = "seed 000 §4.1.4: 500 random particles in a periodic box, quintic kernel; relaxes";
-  s.defaults.kernel = KernelType::M6;
+  s.defaults.kernel.type = KernelType::M6;
   s.params = {{"count", 500, 2, 1e7, true, "number of particles"},
               {"mass", 0.1, 1e-12, 1e12, false, "particle mass"},
               {"u0", 0.05, 1e-12, 1e12, false, "initial specific internal energy"},
               {"seed", 2017, 0, 1e15, true, "random seed (same seed, same particles on every platform)"}};
   s.build = [s](const Params& prm, const SceneValues& v) {
     const auto n = static_cast<std::size_t>(v.at("count"));
-    Particles p = make_particles(s, n);
+    Particles p = make_particles(prm, s.dim, n);
     Random rng(static_cast<std::uint64_t>(v.at("seed")));
     const double h = effective_eta(prm, 2) / std::sqrt(static_cast<double>(n));
     for (std::size_t k = 0; k < n; ++k) {
@@ -97,9 +99,9 @@ SceneSpec box_random_scene() {
       p.x[1][k] = rng.uniform();
       p[Field::Mass][k] = v.at("mass");
       p[Field::H][k] = h;
-      p[Field::Energy][k] = v.at("u0");
+      if (p.has(Field::Energy)) p[Field::Energy][k] = v.at("u0");
     }
-    return periodic_domain(std::move(p));
+    return periodic_domain(std::move(p), 1.0 / std::sqrt(static_cast<double>(n)));
   };
   return s;
 }

@@ -24,9 +24,8 @@ class Random {
   std::uint64_t s_;
 };
 
-/// Particles with the fields of the scene's modules, mass m each and a smoothing-length guess
-/// h = eta (m/rho)^(1/d) from the expected density rho.
-Particles make_particles(const SceneSpec& spec, std::size_t n);
+/// n fluid particles in dimension dim with every field the stages of prm.physics use allocated.
+Particles make_particles(const Params& prm, int dim, std::size_t n);
 
 /// Effective eta for a scene's params (kernel default if eta == 0).
 double effective_eta(const Params& prm, int dim);

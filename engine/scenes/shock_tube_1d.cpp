@@ -3,9 +3,10 @@
 #include <cmath>
 #include <memory>
 
+#include "families.h"
+#include "reference/riemann_reference.h"
 #include "scene_util.h"
 #include "sph/riemann.h"
-#include "families.h"
 
 namespace sph::scenes {
 namespace {
@@ -26,26 +27,10 @@ TubeSetup tube_from(const SceneValues& v) {
   return t;
 }
 
-class RiemannReference final : public Reference {
- public:
-  RiemannReference(const TubeSetup& t, double gamma)
-      : solver_(t.left, t.right, gamma, t.x0), lo_(t.x_lo), hi_(t.x_hi) {}
-  State at(double x, double t) const override {
-    const GasState s = solver_.sample(x, t);
-    return {s.rho, s.v, s.p, solver_.internal_energy(x, t)};
-  }
-  double window_lo() const override { return lo_; }
-  double window_hi() const override { return hi_; }
-
- private:
-  RiemannSolver solver_;
-  double lo_, hi_;
-};
-
 SceneSetup build_tube(const SceneSpec& spec, const Params& prm, const SceneValues& v) {
   const TubeSetup t = tube_from(v);
   const std::size_t n = t.n_left + t.n_right;
-  SceneSetup s{make_particles(spec, n), {}};
+  SceneSetup s{make_particles(prm, spec.dim, n), {}, (t.x0 - t.x_lo) / t.n_left, 0.0};
   Particles& p = s.particles;
   const double dxl = (t.x0 - t.x_lo) / t.n_left, dxr = (t.x_hi - t.x0) / t.n_right;
   const double m = t.left.rho * dxl;  // = rho_r dx_r up to the rounding of n_right
@@ -57,7 +42,7 @@ SceneSetup build_tube(const SceneSpec& spec, const Params& prm, const SceneValue
     const GasState& g = left ? t.left : t.right;
     p[Field::Mass][i] = m;
     p[Field::H][i] = eta * dx;
-    p[Field::Energy][i] = energy_from_pressure(g.p, g.rho, prm.gamma);
+    if (p.has(Field::Energy)) p[Field::Energy][i] = energy_from_pressure(g.p, g.rho, prm.gas.gamma);
     p.v[0][i] = g.v;
   }
   s.domain.lo = {t.x_lo, 0, 0};
@@ -87,11 +72,13 @@ SceneSpec sod_scene() {
   s.category = "gas dynamics / shock tubes";
   s.description = "1D Sod shock tube, rho,p = 1,1 | 0.125,0.1, gamma 1.4, t = 0.2, exact Riemann reference";
   s.dim = 1;
-  s.defaults.kernel = KernelType::M4;
-  s.defaults.t_end = 0.2;
-  s.defaults.dt_out = 0.05;
-  s.defaults.alpha_u = 1.0;
-  s.modules.conductivity = true;
+  s.defaults.kernel.type = KernelType::M4;
+  s.defaults.time.t_end = 0.2;
+  s.defaults.time.dt_out = 0.05;
+  s.defaults.physics.conduction = Toggle::On;
+  s.defaults.conduction.alpha_u = 1.0;
+  s.allow(Slot::Eos, {"ideal_gas"});  // the Riemann reference is an ideal-gas solution
+  s.allow(Slot::Walls, {"none"});
   s.params = tube_params(-0.5, 0.5, 1.0, 1.0, 0.125, 0.1, 400);
   s.build = [s](const Params& p, const SceneValues& v) { return build_tube(s, p, v); };
   s.initial_pressure = [](const Vec3& r, const SceneValues& v) { return r.x < v.at("x0") ? v.at("p_l") : v.at("p_r"); };
@@ -100,7 +87,8 @@ SceneSpec sod_scene() {
     return std::pair<std::size_t, double>(static_cast<std::size_t>(v.at("n_left")) / 2, v.at("rho_l"));
   };
   s.reference = [](const Params& p, const SceneValues& v) -> std::unique_ptr<Reference> {
-    return std::make_unique<RiemannReference>(tube_from(v), p.gamma);
+    const TubeSetup t = tube_from(v);
+    return make_riemann_reference(t.left, t.right, p.gas.gamma, t.x0, t.x_lo, t.x_hi);
   };
   return s;
 }
@@ -110,9 +98,8 @@ SceneSpec castellanos_scene() {
   s.name = "shocktube_castellanos";
   s.description = "seed 003 tube: x in [-0.6,0.6], 1280 | 320 equal-mass particles, rho,p = 1,1 | 0.25,0.1795";
   s.params = tube_params(-0.6, 0.6, 1.0, 1.0, 0.25, 0.1795, 1280);
-  s.defaults.integrator = IntegratorType::RK4;  // seed 003 integrates with RK4
-  s.defaults.alpha_u = 0.0;                     // seed 003 eqs. 3.58-3.61: viscosity only
-  s.modules.conductivity = false;
+  s.defaults.time.integrator = IntegratorType::RK4;  // seed 003 integrates with RK4
+  s.defaults.physics.conduction = Toggle::Off;       // seed 003 eqs. 3.58-3.61: viscosity only
   s.build = [s](const Params& p, const SceneValues& v) { return build_tube(s, p, v); };
   return s;
 }

@@ -15,16 +15,18 @@ SceneSpec tube2d_scene() {
   s.category = "gas dynamics / shock tubes";
   s.description = "seed 000 §4.2: 2D tube [0,5]x[0,1], 4:1 compressed gas, mirror walls, 512 particles, quintic";
   s.dim = 2;
-  s.defaults.kernel = KernelType::M6;
-  s.defaults.t_end = 20.0;
-  s.defaults.dt_out = 1.0;
+  s.defaults.kernel.type = KernelType::M6;
+  s.defaults.time.t_end = 20.0;
+  s.defaults.time.dt_out = 1.0;
+  s.allow(Slot::Eos, {"ideal_gas", "isothermal"});
+  s.allow(Slot::Walls, {"none"});
   s.params = {{"n_side", 16, 2, 2000, true, "lattice particles per unit length on the dense side (seed: 16)"},
               {"u0", 0.05, 1e-12, 1e12, false, "initial specific internal energy (seed 000: 0.05)"}};
   s.build = [s](const Params& prm, const SceneValues& v) {
     const auto n = static_cast<std::size_t>(v.at("n_side"));  // dense block: n x n in [0,1]^2
     const std::size_t nr = n / 2;                               // light block: spacing 2/n
     const std::size_t count = n * n + (4 * nr) * nr;
-    Particles p = make_particles(s, count);
+    Particles p = make_particles(prm, s.dim, count);
     const double dxl = 1.0 / n, dxr = 1.0 / nr, eta = effective_eta(prm, 2);
     const double m = 1.0 / static_cast<double>(n * n);  // dense side density 1
     std::size_t k = 0;
@@ -33,14 +35,14 @@ SceneSpec tube2d_scene() {
       p.x[1][k] = y;
       p[Field::Mass][k] = m;
       p[Field::H][k] = eta * dx;
-      p[Field::Energy][k] = v.at("u0");
+      if (p.has(Field::Energy)) p[Field::Energy][k] = v.at("u0");
       ++k;
     };
     for (std::size_t j = 0; j < n; ++j)
       for (std::size_t i = 0; i < n; ++i) put((i + 0.5) * dxl, (j + 0.5) * dxl, dxl);
     for (std::size_t j = 0; j < nr; ++j)
       for (std::size_t i = 0; i < 4 * nr; ++i) put(1.0 + (i + 0.5) * dxr, (j + 0.5) * dxr, dxr);
-    SceneSetup out{std::move(p), {}};
+    SceneSetup out{std::move(p), {}, dxl, 0.0};
     out.domain.lo = {0, 0, 0};
     out.domain.hi = {5, 1, 1};
     out.domain.bc = {Boundary::Wall, Boundary::Wall, Boundary::Open};

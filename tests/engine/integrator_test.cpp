@@ -43,15 +43,12 @@ struct Oscillator {
     s.x = {&x, &y, &z};
     s.v = {&v, &y, &z};
     s.a = {&a, &y, &z};
-    if (energy) {
-      s.u = &u;
-      s.dudt = &dudt;
-    }
+    if (energy) s.evolved.push_back({&u, &dudt});
   }
   void eval() {
     ++evaluations;
     a[0] = -(k * x[0] + b * v[0]) / m;
-    if (s.u) dudt[0] = -u[0];
+    if (!s.evolved.empty()) dudt[0] = -u[0];
   }
 };
 

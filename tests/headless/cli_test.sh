@@ -22,7 +22,7 @@ ok "last particle file is at t = 0.2" grep -q "^# t = 0.2," "$work/sod/particles
 ok "diagnostics header" grep -q "^step,t,dt,E_kin,E_int,E_pot,E_tot,px,py,pz,Lx,Ly,Lz" "$work/sod/diagnostics.csv"
 ok "particle header" grep -q "^id,x,y,z,vx,vy,vz,m,rho,p,u,h$" "$work/sod/particles_00004.csv"
 ok "errors header says what L1 is" grep -q "^# L1 = mean over particles" "$work/sod/errors.csv"
-ok "summary prints L1" grep -q "L1(rho) = " "$work/sod.log"
+ok "summary prints L1" grep -q "L1_rho = " "$work/sod.log"
 # scene.json is a complete scene file: running it again gives the same result
 "$sph" run "$work/sod/scene.json" --out "$work/again" > /dev/null; check "rerun scene.json" 0 $?
 ok "same particles from scene.json" cmp -s "$work/sod/particles_00004.csv" "$work/again/particles_00004.csv"

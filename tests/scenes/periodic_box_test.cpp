@@ -20,7 +20,7 @@ TEST_P(LatticeDensity, MatchesMassOverArea) {
   // 100 particles of m = 0.1 give rho = 10; the seed's 256-particle lattice has rho = 2.56 (m = 0.01).
   for (auto [n, m, rho] : {std::tuple{10, 0.1, 10.0}, std::tuple{16, 0.01, 2.56}}) {
     RunConfig cfg = RunConfig::from_scene("box_lattice");
-    cfg.params.kernel = GetParam().kernel;
+    cfg.params.kernel.type = GetParam().kernel;
     cfg.values["n_side"] = n;
     cfg.values["mass"] = m;
     World w(cfg);

@@ -1,17 +1,21 @@
-// Conserved quantities and error norms reported at every output (seed 000 eqs. 3.4.1–3.4.5).
+// Conserved quantities reported at every step (seed 000 eqs. 3.4.1–3.4.5), and the text rows of
+// diagnostics.csv and errors.csv.
 #pragma once
 #include <array>
 #include <cstdint>
 #include <string>
+#include <vector>
+
+#include "sph/reference.h"
 
 namespace sph {
 
 struct Diagnostics {
   std::int64_t step = 0;
   double t = 0.0, dt = 0.0;
-  double E_kin = 0.0;  ///< sum 1/2 m v^2
-  double E_int = 0.0;  ///< sum m u
-  double E_pot = 0.0;  ///< gravitational potential energy (0 without gravity)
+  double E_kin = 0.0;  ///< sum 1/2 m v^2 over the fluid
+  double E_int = 0.0;  ///< internal energy of the EOS: sum m u (gas), sum m e(rho) (Tait)
+  double E_pot = 0.0;  ///< potential energy of the body force and the Lennard-Jones walls (0 without)
   double E_tot = 0.0;  ///< E_kin + E_int + E_pot
   std::array<double, 3> P{0, 0, 0};  ///< linear momentum sum m v
   std::array<double, 3> L{0, 0, 0};  ///< angular momentum sum r x m v about the origin
@@ -20,20 +24,14 @@ struct Diagnostics {
   int h_iter_max = 0;
   std::size_t h_not_converged = 0;
   double neighbours_mean = 0.0;
-};
-
-/// L1 = mean over particles in the scene's window of |f - f_exact| (and the max norm).
-struct ErrorNorms {
-  double t = 0.0;
-  std::size_t count = 0;  ///< particles inside the window
-  double L1_rho = 0.0, L1_v = 0.0, L1_p = 0.0, L1_u = 0.0;
-  double Linf_rho = 0.0;
+  std::size_t correction_fallbacks = 0;  ///< particles whose gradient correction fell back to L = I
 };
 
 /// CSV header line and row for diagnostics.csv.
 std::string diagnostics_csv_header();
 std::string diagnostics_csv_row(const Diagnostics& d);
-std::string errors_csv_header();
-std::string errors_csv_row(const ErrorNorms& e);
+/// errors.csv: "t," then the reference's column names; a row is t then the values.
+std::string errors_csv_header(const std::vector<RefColumn>& columns);
+std::string errors_csv_row(double t, const std::vector<double>& values);
 
 }  // namespace sph

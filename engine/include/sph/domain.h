@@ -18,13 +18,15 @@ struct Domain {
 };
 
 /// Rebuild the ghost particles for every real particle within `margin` of a periodic or wall boundary
-/// (corners included). Sets positions, ids, ghost_src and ghost_flip; scalar state is copied by
-/// copy_ghost_state. Deterministic: ghosts are appended axis by axis in particle order.
+/// (corners included). Sets positions, ids, kinds, ghost_src and ghost_flip; the state is copied by
+/// copy_ghost_velocity and copy_ghost_field. Deterministic: ghosts are appended axis by axis in particle order.
 void make_ghosts(const Domain& d, double margin, Particles& p);
 
-/// Copy velocity (mirrored across walls) and the listed scalar fields from each ghost's source.
+/// Copy velocity (mirrored across walls) and fields from each ghost's source. Vector and tensor
+/// components change sign as their FieldInfo::flip_axes say (a mirror reverses the normal component).
 void copy_ghost_velocity(Particles& p);
 void copy_ghost_field(Particles& p, Field f);
+void copy_ghost_fields(Particles& p, FieldSet fields);
 
 /// Wrap real particles into periodic axes and reflect those that crossed a wall (specular bounce).
 void apply_boundaries(const Domain& d, Particles& p);

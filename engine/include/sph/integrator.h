@@ -1,5 +1,7 @@
-// Time integrators over the particle phase space (x, v and, when the scene has an energy equation, u).
-// Chosen at runtime by IntegratorType; each is a small class in src/integrators/.
+// Time integrators over the particle phase space: x, v and whatever the stages evolve (u with the
+// energy equation, rho with the continuity equation). Particles drift with v, or with v plus an XSPH
+// correction when the scene has one. Chosen at runtime by IntegratorType; each is a small class in
+// src/integrators/.
 #pragma once
 #include <array>
 #include <functional>
@@ -10,26 +12,34 @@
 
 namespace sph {
 
-/// Views of the evolved arrays (first n entries of each) and of their time derivatives.
+/// A state array advanced with its rate: y' = rate (first n entries).
+struct EvolvedArray {
+  std::vector<double>* y = nullptr;
+  std::vector<double>* rate = nullptr;
+};
+
+/// Views of the evolved arrays (first n entries of each: the moving particles) and their derivatives.
 struct PhaseSpace {
   int dim = 1;
   std::size_t n = 0;
   std::array<std::vector<double>*, 3> x{}, v{}, a{};
-  std::vector<double>* u = nullptr;     ///< specific internal energy, or null
-  std::vector<double>* dudt = nullptr;  ///< its rate, or null
+  /// dx/dt = v + drift when set (XSPH, seed 001 eq. 47); refreshed by every evaluation.
+  std::array<std::vector<double>*, 3> drift{};
+  std::vector<EvolvedArray> evolved;
+  bool drifts() const { return drift[0] != nullptr; }
 };
 
-/// Recomputes a (and du/dt) from the current x, v, u.
+/// Recomputes a, the drift and the evolved rates from the current state.
 using Evaluate = std::function<void()>;
 
 class Integrator {
  public:
   virtual ~Integrator() = default;
-  /// Advances the phase space by dt. `current` says whether a and du/dt already belong to the current
-  /// state (then integrators that start with an evaluation skip it). Returns whether a and du/dt belong
+  /// Advances the phase space by dt. `current` says whether the rates already belong to the current
+  /// state (then integrators that start with an evaluation skip it). Returns whether the rates belong
   /// to the new state on return.
   virtual bool step(PhaseSpace& s, const Evaluate& eval, double dt, bool current) = 0;
-  /// Drops internal history (after a reset or a change of particle count).
+  /// Drops internal history (after a reset, a change of particle count or of the evolved set).
   virtual void reset() {}
 };
 

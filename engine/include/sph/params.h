@@ -1,8 +1,11 @@
-// Run parameters: a plain value struct with defaults and units. The engine steps on a const Params&;
-// the GUI edits its own copy and hands it over whole. Every field is declared once in param_table.cpp,
-// which drives the JSON key, the --set override and (later) the GUI widget.
+// Run parameters: a plain value struct with defaults and units, grouped by the stage that uses them.
+// The engine steps on a const Params&; the GUI edits its own copy and hands it over whole. Every field
+// is declared once in param_table.cpp (key GROUP.NAME, unit, range, stage), which drives the JSON key,
+// the --set override and the GUI widget, and refuses a parameter whose stage the scene does not run.
 #pragma once
 #include <string>
+
+#include "sph/physics.h"
 
 namespace sph {
 
@@ -11,39 +14,107 @@ enum class KernelType { M4, M5, M6, Gaussian, WendlandC2, WendlandC4 };
 /// Time integrators: explicit Euler, RK4 (seed 000 App. A), leapfrog kick-drift-kick,
 /// and the modified-Euler predictor-corrector of seed 001 eqs. 56–59.
 enum class IntegratorType { Euler, RK4, Leapfrog, PredictorCorrector };
-/// Smoothing length: h = eta (m/rho)^(1/d) solved with rho (seed 000 eq. 3.2.21), or held fixed.
-enum class HMode { Variable, Fixed };
+
+struct KernelParams {
+  KernelType type = KernelType::M4;  ///< kernel family (live: takes effect at the next step)
+  double eta = 0.0;                  ///< h = eta (m/rho)^(1/d); 0 = the kernel's default [dimensionless]
+  bool operator==(const KernelParams&) const = default;
+};
+
+/// Newton-Raphson solve of h (physics.smoothing = variable).
+struct SmoothingParams {
+  double tol = 1e-10;  ///< relative tolerance on h [dimensionless]
+  int max_iter = 30;   ///< iteration cap before the bisection fallback
+  bool operator==(const SmoothingParams&) const = default;
+};
+
+struct TimeParams {
+  IntegratorType integrator = IntegratorType::Leapfrog;
+  double dt = 0.0;       ///< fixed timestep [time]; 0 = adaptive with cfl
+  double cfl = 0.3;      ///< Courant factor: dt = cfl min(h/v_sig, sqrt(h/|a|), stage limits) [dimensionless]
+  double t_end = 0.2;    ///< end time of a run [time]
+  double dt_out = 0.05;  ///< interval between particle outputs [time]
+  bool operator==(const TimeParams&) const = default;
+};
+
+/// Ideal gas (physics.eos = ideal_gas) and isothermal gas (isothermal).
+struct GasParams {
+  double gamma = 1.4;  ///< adiabatic index of P = (gamma-1) rho u (seed 000 eq. 3.3.23) [dimensionless]
+  double cs = 1.0;     ///< isothermal sound speed, P = cs^2 rho [length/time]
+  bool operator==(const GasParams&) const = default;
+};
+
+/// Weakly compressible liquid, Tait/Cole EOS (physics.eos = tait; seed 001 eq. 3).
+struct LiquidParams {
+  double rho0 = 1000.0;  ///< reference density [kg/m^d]
+  double c0 = 1414.2135623730951;  ///< sound speed at rho0 [m/s]; B = rho0 c0^2 / gamma
+  double gamma = 7.0;    ///< Tait exponent (7 for water) [dimensionless]; not the gas gamma
+  double p0 = 0.0;       ///< background pressure added to P [Pa]
+  bool operator==(const LiquidParams&) const = default;
+};
+
+/// Viscosity (physics.viscosity).
+struct ViscParams {
+  double alpha = 1.0;  ///< Monaghan Pi, linear term (seed 003 eq. 3.16; seed 001 eq. 41) [dimensionless]
+  double beta = 2.0;   ///< Monaghan Pi, quadratic term [dimensionless]
+  double eps = 0.01;   ///< eta^2 = eps h^2 regularises 1/r^2 in Pi and the Laplacian (seed 001 eq. 42) [dimensionless]
+  double nu = 1e-6;    ///< kinematic viscosity of the Laplacian viscosity [length^2/time]
+  bool operator==(const ViscParams&) const = default;
+};
+
+/// Artificial thermal conductivity (physics.conduction; Price 2008, JCP 227, 10040).
+struct ConductionParams {
+  double alpha_u = 1.0;  ///< strength [dimensionless]
+  bool operator==(const ConductionParams&) const = default;
+};
+
+/// XSPH (physics.xsph; seed 001 eq. 45).
+struct XsphParams {
+  double eps = 0.5;  ///< v* = v + eps sum_b m_b (v_b - v_a)/rho_ab W_ab [dimensionless]
+  bool operator==(const XsphParams&) const = default;
+};
+
+/// Uniform body force (physics.body_force = uniform).
+struct BodyParams {
+  double gx = 0.0, gy = -9.81, gz = 0.0;  ///< acceleration [length/time^2]
+  bool operator==(const BodyParams&) const = default;
+};
+
+/// Wall particles (physics.walls).
+struct WallParams {
+  double D = 0.0;   ///< Lennard-Jones strength [length^2/time^2] (seed 001 eq. 60: D ~ 5 g H); 0 = the scene's
+  double p1 = 4.0;  ///< repulsive exponent [dimensionless]
+  double p2 = 2.0;  ///< attractive exponent, p1 > p2 [dimensionless]
+  double r0 = 0.0;  ///< cut-off [length]; 0 = the scene's initial particle spacing
+  bool operator==(const WallParams&) const = default;
+};
+
+/// Kernel and gradient corrections (physics.force = corrected or standard_corrected; seed 001 eqs. 17-37).
+struct CorrectionParams {
+  double min_rcond = 0.05;  ///< below this reciprocal condition number of the gradient-correction matrix,
+                            ///< L = I is used instead (free surfaces, few neighbours) [dimensionless]
+  bool operator==(const CorrectionParams&) const = default;
+};
 
 struct Params {
-  // --- kernel and smoothing length -------------------------------------------------------------
-  KernelType kernel = KernelType::M4;  ///< kernel family (live: takes effect at the next step)
-  double eta = 0.0;                    ///< h = eta (m/rho)^(1/d); 0 = the kernel's default (dimensionless)
-  HMode h_mode = HMode::Variable;      ///< variable (grad-h, Omega terms) or fixed h
-  double h_tol = 1e-10;                ///< Newton-Raphson relative tolerance on h (dimensionless)
-  int h_max_iter = 30;                 ///< Newton-Raphson iteration cap before bisection fallback
-
-  // --- gas ---------------------------------------------------------------------------------------
-  double gamma = 1.4;  ///< adiabatic index of P = (gamma-1) rho u (seed 000 eq. 3.3.23)
-
-  // --- dissipation -------------------------------------------------------------------------------
-  double alpha = 1.0;     ///< Monaghan viscosity linear term (seed 003 eq. 3.16)
-  double beta = 2.0;      ///< Monaghan viscosity quadratic term (seed 003 eq. 3.16)
-  double visc_eps = 0.01; ///< eta^2 = visc_eps h^2 in the viscosity denominator (seed 003 eq. 3.16)
-  double alpha_u = 0.0;   ///< artificial thermal conductivity (Price 2008, JCP 227, 10040); 0 = off
-
-  // --- time integration --------------------------------------------------------------------------
-  IntegratorType integrator = IntegratorType::Leapfrog;
-  double dt = 0.0;       ///< fixed timestep (time units); 0 = adaptive with cfl
-  double cfl = 0.3;      ///< Courant factor for the adaptive timestep: dt = cfl h / v_sig (and force limit)
-  double t_end = 0.2;    ///< end time of a run (time units)
-  double dt_out = 0.05;  ///< interval between particle outputs (time units)
+  Physics physics;           ///< the stage chosen for every slot
+  KernelParams kernel;       ///< kernel.*
+  SmoothingParams h;         ///< h.*
+  TimeParams time;           ///< time.*
+  GasParams gas;             ///< gas.*
+  LiquidParams liquid;       ///< liquid.*
+  ViscParams visc;           ///< visc.*
+  ConductionParams conduction;  ///< conduction.*
+  XsphParams xsph;           ///< xsph.*
+  BodyParams body;           ///< body.*
+  WallParams walls;          ///< walls.*
+  CorrectionParams correction;  ///< correction.*
+  bool operator==(const Params&) const = default;
 };
 
 const char* to_string(KernelType k);
 const char* to_string(IntegratorType i);
-const char* to_string(HMode m);
 bool parse(const std::string& s, KernelType& out);
 bool parse(const std::string& s, IntegratorType& out);
-bool parse(const std::string& s, HMode& out);
 
 }  // namespace sph

@@ -1,7 +1,8 @@
-// A scene is a description: name, dimension, the physics modules it turns on, default parameters,
+// A scene is a description: name, dimension, the physics stages it runs (in its default parameters),
 // its own parameters (particle counts, states), a function that places the particles, and optionally
 // an exact or reference solution. Built-in scenes live in an explicit table (scenes/registry.cpp).
 #pragma once
+#include <array>
 #include <functional>
 #include <map>
 #include <memory>
@@ -13,19 +14,9 @@
 #include "sph/domain.h"
 #include "sph/params.h"
 #include "sph/particles.h"
+#include "sph/reference.h"
 
 namespace sph {
-
-/// Physics modules a scene opts into; each needs a set of fields (modules.cpp).
-struct Modules {
-  bool hydro = true;         ///< summation density, grad-h, pressure forces (seed 000 §3.3)
-  bool energy = true;        ///< internal energy equation (seed 000 eq. 3.3.19)
-  bool viscosity = true;     ///< Monaghan artificial viscosity (seed 003 eq. 3.16)
-  bool conductivity = false; ///< artificial thermal conductivity (Price 2008)
-};
-
-/// Fields the enabled modules need.
-FieldSet fields_for(const Modules& m);
 
 /// A number the scene itself takes (e.g. particles per side); key "scene.<name>" in files and --set.
 struct SceneParam {
@@ -38,21 +29,13 @@ struct SceneParam {
 
 using SceneValues = std::map<std::string, double>;
 
-/// What a scene's build function returns: the particles (with m, h guess, u, v set) and the box.
+/// What a scene's build function returns: the particles (with kinds, m, h guess, v and the state the
+/// stages start from set) and the box.
 struct SceneSetup {
   Particles particles;
   Domain domain;
-};
-
-/// Exact or reference solution of a 1D scene (e.g. a Riemann problem), sampled at (x, t).
-class Reference {
- public:
-  virtual ~Reference() = default;
-  struct State { double rho, v, p, u; };
-  virtual State at(double x, double t) const = 0;
-  /// Particles used in error norms: x in [lo, hi] (away from boundary effects).
-  virtual double window_lo() const = 0;
-  virtual double window_hi() const = 0;
+  double spacing = 0.0;        ///< initial particle spacing [length] (Lennard-Jones r0 when walls.r0 = 0)
+  double wall_strength = 0.0;  ///< Lennard-Jones D [length^2/time^2] when walls.D = 0 (seed 001: ~5 g H)
 };
 
 struct SceneSpec {
@@ -60,8 +43,9 @@ struct SceneSpec {
   std::string category;     ///< e.g. "gas dynamics / shock tubes"
   std::string description;  ///< one line for `sph list`
   int dim = 1;
-  Modules modules;
-  Params defaults;                       ///< the scene's default run parameters
+  Params defaults;                       ///< the scene's default run parameters, its physics included
+  /// Per slot, the options this scene accepts (empty: any combination Physics::validate accepts).
+  std::array<std::vector<std::string>, kSlotCount> allowed;
   std::vector<SceneParam> params;        ///< the scene's own parameters with defaults and ranges
   std::function<SceneSetup(const Params&, const SceneValues&)> build;
   std::function<std::unique_ptr<Reference>(const Params&, const SceneValues&)> reference;  ///< may be empty
@@ -75,6 +59,9 @@ struct SceneSpec {
   std::function<double(const Vec3&, const SceneValues&)> initial_pressure;
 
   SceneValues default_values() const;
+  /// Restricts a slot to these options.
+  void allow(Slot s, std::vector<std::string> options) { allowed[static_cast<std::size_t>(s)] = std::move(options); }
+  bool allows(Slot s, const std::string& option) const;
 };
 
 /// All built-in scenes, in display order.

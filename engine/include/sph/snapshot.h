@@ -9,19 +9,29 @@
 
 namespace sph {
 
-/// One scalar field per particle, with its range over the particles.
+/// One scalar field per particle, with its range over the fluid particles.
 struct SnapshotField {
   std::string name;           ///< key used by --color-by and the GUI ("rho", "p", "u", "speed", "h", ...)
   std::string label;          ///< human label with unit, e.g. "density rho"
   std::vector<float> values;  ///< one value per particle
-  float min = 0.f, max = 0.f; ///< range over the particles (finite values only)
+  float min = 0.f, max = 0.f; ///< range over the fluid particles (finite values only; walls excluded)
 };
 
-/// An exact or reference solution sampled on a line (1D scenes): value(x) for one field.
+/// An exact or reference solution sampled on a line: value(x) for one field, x along coordinate `axis`
+/// (1D profile plots).
 struct ExactCurve {
   std::string field;        ///< same key as SnapshotField::name
   std::vector<float> x;     ///< abscissae, increasing
   std::vector<float> value; ///< reference value at x
+  int axis = 0;             ///< which coordinate x is
+};
+
+/// A reference shape in the plane (world coordinates), e.g. the exact ellipse of a drop or a measured
+/// surge front: drawn over 2D views.
+struct Outline {
+  std::string label;     ///< legend text
+  std::vector<float> x;  ///< vertices of a polyline
+  std::vector<float> y;
 };
 
 struct Snapshot {
@@ -33,8 +43,10 @@ struct Snapshot {
   std::size_t count = 0;       ///< number of (real) particles; every array below has this length
   std::vector<float> x, y, z;  ///< positions (y, z are 0 below their dimension)
   std::vector<float> h;        ///< smoothing length (disc radius in 2D views)
+  std::vector<std::uint8_t> kind;  ///< sph::Kind per particle (0 fluid, 1 wall: drawn grey); empty = all fluid
   std::vector<SnapshotField> fields;  ///< the active display fields
   std::vector<ExactCurve> exact;      ///< reference curves (1D scenes with an exact solution)
+  std::vector<Outline> outlines;      ///< reference shapes (2D scenes)
   std::array<float, 6> bounds{0, 1, 0, 1, 0, 1};  ///< domain box xmin,xmax,ymin,ymax,zmin,zmax
 
   /// The field with this name, or nullptr.
@@ -43,6 +55,7 @@ struct Snapshot {
       if (f.name == name) return &f;
     return nullptr;
   }
+  bool is_wall(std::size_t i) const { return i < kind.size() && kind[i] != 0; }
   const ExactCurve* find_exact(std::string_view name) const {
     for (const auto& c : exact)
       if (c.field == name) return &c;

@@ -32,9 +32,9 @@ struct StepperOptions {
 /// One point of the running diagnostics, for plots against simulated time.
 struct HistorySample {
   double t = 0.0;                             ///< simulated time
-  double E_kin = 0.0, E_int = 0.0, E_tot = 0.0;  ///< energies (seed 000 eqs. 3.4.4-3.4.5)
+  double E_kin = 0.0, E_int = 0.0, E_pot = 0.0, E_tot = 0.0;  ///< energies (seed 000 eqs. 3.4.4-3.4.5)
   double P = 0.0;                             ///< |linear momentum| (seed 000 eq. 3.4.1)
-  double L1_rho = 0.0;                        ///< L1 density error against the exact solution (0 without one)
+  std::vector<double> ref;                    ///< the reference's values (StepperFrame::ref_columns)
 };
 
 /// What the engine thread publishes. Everything here describes the same instant of the same World.
@@ -44,8 +44,12 @@ struct StepperFrame {
                                    ///< step and time never decrease within one world_serial
   Snapshot snapshot;               ///< particles for the renderer (count == x.size())
   Diagnostics diagnostics;         ///< energies, momenta, h-iterations, mean neighbours
-  bool has_reference = false;      ///< the scene has an exact solution (errors are meaningful)
-  ErrorNorms errors;               ///< L1 norms against it
+  bool has_reference = false;      ///< the scene has a reference (exact solution, ODE, measured data)
+  std::vector<RefColumn> ref_columns;  ///< its columns (measurements, exact values, error norms)
+  std::vector<double> ref_values;  ///< their values now
+  int ref_primary = -1;            ///< the column plotted as "the error"
+  std::vector<std::pair<int, int>> ref_series;  ///< measured/exact column pairs plotted together
+  std::vector<std::string> stages; ///< the stages the World runs, in pipeline order
   DensityStats density;            ///< last density solve
   RunConfig config;                ///< scene, adopted params and scene values of this World
   std::uint64_t params_version = 0;///< the last mailbox version adopted (0 = none yet)

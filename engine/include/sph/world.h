@@ -1,10 +1,11 @@
-// The simulation: particles, boundaries, the active modules and an integrator. Headless runs and tests
-// call step() directly (no threads); the GUI's stepper thread owns one World.
+// The simulation: particles, boundaries, the scene's pipeline of stages and an integrator. Headless
+// runs and tests call step() directly (no threads); the GUI's stepper thread owns one World.
 #pragma once
 #include <cstdint>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "sph/config.h"
 #include "sph/density.h"
@@ -16,6 +17,10 @@
 
 namespace sph {
 
+class Pipeline;
+struct EvalStats;
+struct StageContext;
+
 /// A NaN or inf appeared in the state: which particle (id), which field, at which step.
 struct DivergedError : std::runtime_error {
   DivergedError(std::int64_t particle, std::int64_t step, double t, const std::string& field);
@@ -26,12 +31,15 @@ struct DivergedError : std::runtime_error {
 
 class World {
  public:
+  /// Builds the scene. Throws ConfigError if its physics is not a valid combination for the scene.
   explicit World(const RunConfig& cfg);
   ~World();
   World(const World&) = delete;
   World& operator=(const World&) = delete;
 
-  /// Adopt new run parameters; live ones take effect at the next step (kernel, eta, alpha, ...).
+  /// Adopt new run parameters; live ones take effect at the next step (kernel, eta, alpha, the force
+  /// formulation...). A change of physics rebuilds the pipeline and allocates the fields it adds.
+  /// Throws ConfigError (and keeps the old parameters) if the physics is not valid for the scene.
   void set_params(const Params& p);
   const Params& params() const { return cfg_.params; }
   const RunConfig& config() const { return cfg_; }
@@ -50,35 +58,49 @@ class World {
   const Particles& particles() const { return p_; }
   const Domain& domain() const { return domain_; }
   const Kernel& kernel() const { return kernel_; }
-  double eta() const;  ///< effective eta (the kernel's default if params.eta == 0)
-  const DensityStats& density_stats() const { return dstats_; }
+  double eta() const;  ///< effective eta (the kernel's default if kernel.eta == 0)
+  double spacing() const { return spacing_; }  ///< the scene's initial particle spacing
+  const DensityStats& density_stats() const;
+  std::size_t correction_fallbacks() const;  ///< particles whose gradient correction fell back (last evaluation)
   std::int64_t evaluations() const { return evaluations_; }
+  /// Names of the stages that run, in pipeline order.
+  std::vector<std::string> stage_names() const;
 
   Diagnostics diagnostics() const;
   bool has_reference() const { return reference_ != nullptr; }
   const Reference* reference() const { return reference_.get(); }
-  ErrorNorms errors() const;  ///< L1 norms against the reference (zeros if none)
-  /// Copy of what a viewer needs (floats): positions, h, every display field, reference curves.
+  /// The reference's columns and their values now (empty without a reference).
+  const std::vector<RefColumn>& reference_columns() const { return ref_columns_; }
+  std::vector<double> reference_values() const;
+  /// One reference value by column name; throws std::out_of_range if there is no such column.
+  double reference_value(const std::string& name) const;
+  /// Copy of what a viewer needs (floats): positions, h, kinds, every display field, reference curves.
   Snapshot snapshot() const;
 
-  /// Evaluate densities and forces for the current state (done automatically by step()).
+  /// Evaluate the stages for the current state (done automatically by step()).
   void evaluate();
 
  private:
+  StageContext context() const;
   void check_finite() const;
+  PhaseSpace phase_space();
 
   RunConfig cfg_;
   Kernel kernel_;
   Particles p_;
   Domain domain_;
+  double spacing_ = 0.0, wall_strength_ = 0.0;
+  std::unique_ptr<Pipeline> pipeline_;
+  FieldSet start_shared_;  ///< copied to the ghosts before the stages run (mass, h, evolved state)
   std::unique_ptr<Integrator> integrator_;
   std::unique_ptr<Reference> reference_;
+  std::vector<RefColumn> ref_columns_;
   NeighbourList nl_;
-  DensityStats dstats_;
+  std::unique_ptr<EvalStats> stats_;
   std::vector<double> h_limit_;
   double t_ = 0.0, dt_last_ = 0.0;
   std::int64_t step_ = 0, evaluations_ = 0;
-  bool current_ = false;      ///< accelerations belong to the current state
+  bool current_ = false;      ///< rates belong to the current state
   bool rates_known_ = false;  ///< signal speeds from some evaluation under the current params (for dt)
 };
 

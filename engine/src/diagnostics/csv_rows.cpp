@@ -22,7 +22,7 @@ void field(std::string& s, const std::string& v) {
 
 std::string diagnostics_csv_header() {
   return "step,t,dt,E_kin,E_int,E_pot,E_tot,px,py,pz,Lx,Ly,Lz,v_max,h_iter_mean,h_iter_max,h_not_converged,"
-         "neighbours_mean";
+         "neighbours_mean,correction_fallbacks";
 }
 
 std::string diagnostics_csv_row(const Diagnostics& d) {
@@ -33,15 +33,19 @@ std::string diagnostics_csv_row(const Diagnostics& d) {
   field(s, std::to_string(d.h_iter_max));
   field(s, std::to_string(d.h_not_converged));
   field(s, fmt(d.neighbours_mean));
+  field(s, std::to_string(d.correction_fallbacks));
   return s;
 }
 
-std::string errors_csv_header() { return "t,count,L1_rho,L1_v,L1_p,L1_u,Linf_rho"; }
+std::string errors_csv_header(const std::vector<RefColumn>& columns) {
+  std::string s = "t";
+  for (const auto& c : columns) field(s, c.name);
+  return s;
+}
 
-std::string errors_csv_row(const ErrorNorms& e) {
-  std::string s = fmt(e.t);
-  field(s, std::to_string(e.count));
-  for (double v : {e.L1_rho, e.L1_v, e.L1_p, e.L1_u, e.Linf_rho}) field(s, fmt(v));
+std::string errors_csv_row(double t, const std::vector<double>& values) {
+  std::string s = fmt(t);
+  for (double v : values) field(s, fmt(v));
   return s;
 }
 

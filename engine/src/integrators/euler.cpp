@@ -8,10 +8,10 @@ class EulerIntegrator final : public Integrator {
   bool step(PhaseSpace& s, const Evaluate& eval, double dt, bool current) override {
     if (!current) eval();
     for (int k = 0; k < s.dim; ++k) {
-      detail::axpy(*s.x[k], *s.x[k], dt, *s.v[k], s.n);
+      detail::drift(s, k, *s.x[k], *s.x[k], dt, *s.v[k]);
       detail::axpy(*s.v[k], *s.v[k], dt, *s.a[k], s.n);
     }
-    if (s.u) detail::axpy(*s.u, *s.u, dt, *s.dudt, s.n);
+    for (const EvolvedArray& e : s.evolved) detail::axpy(*e.y, *e.y, dt, *e.rate, s.n);
     return false;
   }
 };

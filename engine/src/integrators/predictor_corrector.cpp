@@ -1,7 +1,9 @@
 // Modified Euler predictor-corrector of seed 001 eqs. 56–59 (Monaghan's scheme): one evaluation per step.
-//   predictor (57): v_{i/2} = v_i + dt/2 (dv/dt)_{i-1/2},  x_{i/2} = x_i + dt/2 v_i,  u_{i/2} likewise
+//   predictor (57): v_{i/2} = v_i + dt/2 (dv/dt)_{i-1/2},  x_{i/2} = x_i + dt/2 v_i,  rho, u likewise
 //   corrector (58): v_{i+1/2} = v_i + dt/2 (dv/dt)_{i/2},  x_{i+1/2} = x_i + dt/2 v_{i+1/2}
 //   update   (59): y_{i+1} = 2 y_{i+1/2} - y_i   (the printed eq. 59 swaps x and v; this is the intent)
+// The rates of the predictor are those of the last evaluation (at the previous step's midpoint). With
+// XSPH, dx/dt = v + the correction of the last evaluation.
 #include "phase_ops.h"
 
 namespace sph {
@@ -10,30 +12,32 @@ class PredictorCorrector final : public Integrator {
  public:
   bool step(PhaseSpace& s, const Evaluate& eval, double dt, bool current) override {
     const std::size_t n = s.n;
-    if (!have_rates_ || rate_n_ != n) {  // first step: rates at the current state
+    if (!have_rates_ || rate_n_ != n || rates_.size() != s.evolved.size()) {  // first step: current rates
       if (!current) eval();
       store_rates(s);
     }
     detail::save(s, y0_);
     const double half = 0.5 * dt;
     for (int k = 0; k < s.dim; ++k) {
-      detail::axpy(*s.v[k], y0_.v[k], half, a_[k], n);   // eq. 57
-      detail::axpy(*s.x[k], y0_.x[k], half, y0_.v[k], n);
+      detail::axpy(*s.v[k], y0_.v[k], half, a_[k], n);  // eq. 57
+      if (s.drifts()) detail::axpy2(*s.x[k], y0_.x[k], half, y0_.v[k], drift_[k], n);
+      else detail::axpy(*s.x[k], y0_.x[k], half, y0_.v[k], n);
     }
-    if (s.u) detail::axpy(*s.u, y0_.u, half, dudt_, n);
+    for (std::size_t e = 0; e < s.evolved.size(); ++e) detail::axpy(*s.evolved[e].y, y0_.y[e], half, rates_[e], n);
     eval();
     store_rates(s);
     for (int k = 0; k < s.dim; ++k) {
-      detail::axpy(*s.v[k], y0_.v[k], half, a_[k], n);   // eq. 58
-      detail::axpy(*s.x[k], y0_.x[k], half, *s.v[k], n);
-      for (std::size_t i = 0; i < n; ++i) {             // eq. 59
+      detail::axpy(*s.v[k], y0_.v[k], half, a_[k], n);  // eq. 58
+      detail::drift(s, k, *s.x[k], y0_.x[k], half, *s.v[k]);
+      for (std::size_t i = 0; i < n; ++i) {  // eq. 59
         (*s.v[k])[i] = 2.0 * (*s.v[k])[i] - y0_.v[k][i];
         (*s.x[k])[i] = 2.0 * (*s.x[k])[i] - y0_.x[k][i];
       }
     }
-    if (s.u) {
-      detail::axpy(*s.u, y0_.u, half, dudt_, n);
-      for (std::size_t i = 0; i < n; ++i) (*s.u)[i] = 2.0 * (*s.u)[i] - y0_.u[i];
+    for (std::size_t e = 0; e < s.evolved.size(); ++e) {
+      auto& y = *s.evolved[e].y;
+      detail::axpy(y, y0_.y[e], half, rates_[e], n);
+      for (std::size_t i = 0; i < n; ++i) y[i] = 2.0 * y[i] - y0_.y[e][i];
     }
     return false;
   }
@@ -41,16 +45,20 @@ class PredictorCorrector final : public Integrator {
 
  private:
   void store_rates(const PhaseSpace& s) {
-    for (int k = 0; k < s.dim; ++k) detail::copy(a_[k], *s.a[k], s.n);
-    if (s.u) detail::copy(dudt_, *s.dudt, s.n);
+    for (int k = 0; k < s.dim; ++k) {
+      detail::copy(a_[k], *s.a[k], s.n);
+      if (s.drifts()) detail::copy(drift_[k], *s.drift[k], s.n);
+    }
+    rates_.resize(s.evolved.size());
+    for (std::size_t e = 0; e < s.evolved.size(); ++e) detail::copy(rates_[e], *s.evolved[e].rate, s.n);
     have_rates_ = true;
     rate_n_ = s.n;
   }
   bool have_rates_ = false;
   std::size_t rate_n_ = 0;
   detail::Saved y0_;
-  std::array<std::vector<double>, 3> a_;
-  std::vector<double> dudt_;
+  std::array<std::vector<double>, 3> a_, drift_;
+  std::vector<std::vector<double>> rates_;
 };
 
 std::unique_ptr<Integrator> make_predictor_corrector() { return std::make_unique<PredictorCorrector>(); }

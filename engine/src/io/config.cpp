@@ -95,6 +95,40 @@ void RunConfig::set(const std::string& key, const std::string& value, const std:
   }
   std::string err;
   if (!info->set(params, value, err)) throw ConfigError(origin + ": key '" + key + "': " + err);
+  explicit_keys[std::string(info->key)] = origin;
+}
+
+void check_physics(const SceneSpec& scene, const Physics& physics) {
+  for (const SlotInfo& s : slot_table()) {
+    const std::string option = physics.get(s.slot);
+    if (scene.allows(s.slot, option)) continue;
+    std::string list;
+    for (const auto& o : scene.allowed[static_cast<std::size_t>(s.slot)]) list += (list.empty() ? "" : ", ") + o;
+    throw ConfigError("physics." + std::string(s.key) + " = " + option + ": scene " + scene.name + " takes only " +
+                      list);
+  }
+  const std::string combo = physics.validate();
+  if (!combo.empty()) throw ConfigError(combo);
+}
+
+void RunConfig::validate() const {
+  try {
+    check_physics(*scene, params.physics);
+  } catch (const ConfigError& e) {
+    std::string where;
+    for (const auto& [key, origin] : explicit_keys)
+      if (key.starts_with("physics.")) { where = origin + ": "; break; }
+    throw ConfigError(where + e.what());
+  }
+  for (const auto& [key, origin] : explicit_keys) {
+    const ParamInfo* info = find_param(key);
+    if (info->is_active(params)) continue;
+    const std::string shown = "'" + key + "'" + (info->alias.empty() ? "" : " (formerly '" + std::string(info->alias) + "')");
+    std::string why = ", which scene " + scene->name + " does not run";
+    if (info->slot != Slot::Count)
+      why += " (physics." + std::string(slot_info(info->slot).key) + " = " + params.physics.get(info->slot) + ")";
+    throw ConfigError(origin + ": key " + shown + " is a parameter of " + std::string(info->stage) + why);
+  }
 }
 
 std::string RunConfig::to_json() const {
@@ -102,12 +136,21 @@ std::string RunConfig::to_json() const {
   j["scene"] = scene->name;
   nlohmann::ordered_json p = nlohmann::ordered_json::object();
   for (const auto& info : param_table()) {
+    if (!info.is_active(params)) continue;
     const std::string v = info.get(params);
     double d = 0.0;
-    if (info.choices.empty() && parse_number(v, d)) p[std::string(info.key)] = d;
-    else p[std::string(info.key)] = v;
+    if (info.choices.empty() && parse_number(v, d)) {
+      if (info.integer) p[std::string(info.key)] = static_cast<long long>(d);
+      else p[std::string(info.key)] = d;
+    } else {
+      p[std::string(info.key)] = v;
+    }
   }
-  for (const auto& sp : scene->params) p["scene." + sp.name] = values.at(sp.name);
+  for (const auto& sp : scene->params) {
+    const double v = values.at(sp.name);
+    if (sp.integer) p["scene." + sp.name] = static_cast<long long>(v);
+    else p["scene." + sp.name] = v;
+  }
   j["params"] = p;
   return j.dump(2) + "\n";
 }

@@ -1,4 +1,5 @@
 // Ghost particles for periodic boundaries (seed 000 §4.1.1) and mirror walls (seed 000 §4.2.1).
+#include <bit>
 #include <cmath>
 #include "core/parallel.h"
 #include <vector>
@@ -53,6 +54,7 @@ void make_ghosts(const Domain& d, double margin, Particles& p) {
     p.ghost_src[i] = g[i].src;
     p.ghost_flip[i] = g[i].flip;
     p.id[n + i] = p.id[g[i].src];
+    p.kind[n + i] = p.kind[g[i].src];
   }
 }
 
@@ -70,7 +72,20 @@ void copy_ghost_velocity(Particles& p) {
 void copy_ghost_field(Particles& p, Field f) {
   auto& a = p[f];
   const std::size_t n = p.size();
-  for (std::size_t i = 0; i < p.ghost_src.size(); ++i) a[n + i] = a[p.ghost_src[i]];
+  const std::uint8_t axes = info(f).flip_axes;
+  if (axes == 0) {
+    for (std::size_t i = 0; i < p.ghost_src.size(); ++i) a[n + i] = a[p.ghost_src[i]];
+    return;
+  }
+  // A vector or tensor component changes sign under an odd number of mirrors of its axes.
+  for (std::size_t i = 0; i < p.ghost_src.size(); ++i) {
+    const bool odd = std::popcount(static_cast<unsigned>(axes & p.ghost_flip[i])) & 1u;
+    a[n + i] = odd ? -a[p.ghost_src[i]] : a[p.ghost_src[i]];
+  }
+}
+
+void copy_ghost_fields(Particles& p, FieldSet fields) {
+  fields.for_each([&](Field f) { copy_ghost_field(p, f); });
 }
 
 void apply_boundaries(const Domain& d, Particles& p) {

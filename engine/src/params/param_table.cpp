@@ -15,91 +15,219 @@ std::string format(double v) {
   return os.str();
 }
 
-ParamInfo real(std::string_view key, double Params::*member, double lo, double hi, std::string_view unit,
-               bool live, std::string_view what) {
+using Active = std::function<bool(const Params&)>;
+
+struct Common {
+  std::string_view key, unit, what, alias = {};
+  struct Owner {
+    std::string_view stage = {};
+    Slot slot = Slot::Count;
+    Active active = nullptr;
+  } owner = {};
+  bool live = true;
+};
+
+ParamInfo base(const Common& c) {
   ParamInfo p;
-  p.key = key;
-  p.unit = unit;
-  p.description = what;
+  p.key = c.key;
+  p.group = c.key.substr(0, c.key.find('.'));
+  p.unit = c.unit;
+  p.description = c.what;
+  p.live = c.live;
+  p.alias = c.alias;
+  p.stage = c.owner.stage;
+  p.slot = c.owner.slot;
+  p.active = c.owner.active;
+  return p;
+}
+
+template <class Ref>
+ParamInfo real(const Common& c, Ref ref, double lo, double hi) {
+  ParamInfo p = base(c);
   p.min = lo;
   p.max = hi;
-  p.live = live;
-  p.get = [member](const Params& prm) { return format(prm.*member); };
-  p.set = [member, lo, hi, key](Params& prm, const std::string& text, std::string& err) {
+  p.get = [ref](const Params& prm) { return format(ref(const_cast<Params&>(prm))); };
+  p.set = [ref, lo, hi, key = c.key](Params& prm, const std::string& text, std::string& err) {
     double v = 0.0;
     if (!parse_number(text, v)) { err = "'" + text + "' is not a number"; return false; }
     if (v < lo || v > hi) {
       err = std::string(key) + " = " + text + " is out of range [" + format(lo) + ", " + format(hi) + "]";
       return false;
     }
-    prm.*member = v;
+    ref(prm) = v;
     return true;
   };
   return p;
 }
 
-ParamInfo integer(std::string_view key, int Params::*member, int lo, int hi, bool live, std::string_view what) {
-  ParamInfo p = real(key, nullptr, lo, hi, "-", live, what);
-  p.get = [member](const Params& prm) { return std::to_string(prm.*member); };
-  p.set = [member, lo, hi, key](Params& prm, const std::string& text, std::string& err) {
+template <class Ref>
+ParamInfo integer(const Common& c, Ref ref, int lo, int hi) {
+  ParamInfo p = base(c);
+  p.integer = true;
+  p.min = lo;
+  p.max = hi;
+  p.get = [ref](const Params& prm) { return std::to_string(ref(const_cast<Params&>(prm))); };
+  p.set = [ref, lo, hi, key = c.key](Params& prm, const std::string& text, std::string& err) {
     double v = 0.0;
     if (!parse_number(text, v) || v != std::floor(v)) { err = "'" + text + "' is not an integer"; return false; }
     if (v < lo || v > hi) {
       err = std::string(key) + " = " + text + " is out of range [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
       return false;
     }
-    prm.*member = static_cast<int>(v);
+    ref(prm) = static_cast<int>(v);
     return true;
   };
   return p;
 }
 
-template <class E>
-ParamInfo choice(std::string_view key, E Params::*member, std::vector<E> values, bool live, std::string_view what) {
-  ParamInfo p;
-  p.key = key;
-  p.unit = "-";
-  p.description = what;
-  p.live = live;
+template <class E, class Ref>
+ParamInfo choice(const Common& c, Ref ref, std::vector<E> values) {
+  ParamInfo p = base(c);
   for (E e : values) p.choices.emplace_back(to_string(e));
-  p.get = [member](const Params& prm) { return std::string(to_string(prm.*member)); };
-  p.set = [member, key, names = p.choices](Params& prm, const std::string& text, std::string& err) {
+  p.get = [ref](const Params& prm) { return std::string(to_string(ref(const_cast<Params&>(prm)))); };
+  p.set = [ref, key = c.key, names = p.choices](Params& prm, const std::string& text, std::string& err) {
     E e{};
     if (!parse(text, e)) {
       err = std::string(key) + " = '" + text + "' is not one of:";
       for (const auto& n : names) err += " " + n;
       return false;
     }
-    prm.*member = e;
+    ref(prm) = e;
     return true;
   };
   return p;
 }
 
+ParamInfo slot(const SlotInfo& s, std::string_view key, std::string_view alias) {
+  ParamInfo p = base({key, "choice", s.description, alias, {}, s.live});
+  p.choices = s.options;
+  p.slot = s.slot;
+  const Slot which = s.slot;
+  p.get = [which](const Params& prm) { return prm.physics.get(which); };
+  p.set = [which, key, names = p.choices](Params& prm, const std::string& text, std::string& err) {
+    if (prm.physics.set(which, text)) return true;
+    err = std::string(key) + " = '" + text + "' is not one of:";
+    for (const auto& n : names) err += " " + n;
+    return false;
+  };
+  return p;
+}
+
+// Which stage a parameter belongs to: the words that name it in messages, its slot, and when it is used.
+using Owner = Common::Owner;
+const Owner kVariableH{"the Newton-Raphson smoothing-length solve", Slot::Smoothing,
+                       [](const Params& p) { return p.physics.smoothing == HMode::Variable; }};
+const Owner kIdealGas{"the ideal-gas equation of state", Slot::Eos,
+                      [](const Params& p) { return p.physics.eos == EosType::IdealGas; }};
+const Owner kIsothermal{"the isothermal equation of state", Slot::Eos,
+                        [](const Params& p) { return p.physics.eos == EosType::Isothermal; }};
+const Owner kTait{"the Tait equation of state", Slot::Eos, [](const Params& p) { return p.physics.eos == EosType::Tait; }};
+const Owner kMonaghan{"the Monaghan viscosity stage", Slot::Viscosity,
+                      [](const Params& p) { return p.physics.viscosity == ViscType::Monaghan; }};
+const Owner kLaplacian{"the Laplacian viscosity stage", Slot::Viscosity,
+                       [](const Params& p) { return p.physics.viscosity == ViscType::Laplacian; }};
+const Owner kAnyViscosity{"a viscosity stage", Slot::Viscosity,
+                          [](const Params& p) { return p.physics.viscosity != ViscType::None; }};
+const Owner kConduction{"the conduction stage", Slot::Conduction,
+                        [](const Params& p) { return p.physics.conduction == Toggle::On; }};
+const Owner kXsph{"the XSPH stage", Slot::Xsph, [](const Params& p) { return p.physics.xsph == Toggle::On; }};
+const Owner kBody{"the body-force stage", Slot::BodyForce,
+                  [](const Params& p) { return p.physics.body_force == BodyForce::Uniform; }};
+const Owner kLJ{"the Lennard-Jones wall stage", Slot::Walls,
+                [](const Params& p) { return p.physics.walls == WallType::LennardJones; }};
+const Owner kCorrected{"the kernel-gradient correction of the corrected formulations", Slot::Force,
+                       [](const Params& p) { return p.physics.corrected(); }};
+
 std::vector<ParamInfo> build() {
   using K = KernelType;
   using I = IntegratorType;
-  return {
-      choice("kernel", &Params::kernel, {K::M4, K::M5, K::M6, K::Gaussian, K::WendlandC2, K::WendlandC4}, true,
-             "smoothing kernel W (seed 000 eqs. 3.2.6-3.2.9)"),
-      real("eta", &Params::eta, 0.0, 4.0, "-", true,
-           "h = eta (m/rho)^(1/d) (seed 000 eq. 3.3.33); 0 = the kernel's default"),
-      choice("h_mode", &Params::h_mode, {HMode::Variable, HMode::Fixed}, true,
-             "variable h with grad-h Omega terms (seed 000 eq. 3.3.2) or fixed h"),
-      real("h_tol", &Params::h_tol, 1e-15, 1e-2, "-", true, "Newton-Raphson relative tolerance on h (seed 000 eq. 3.5.1)"),
-      integer("h_max_iter", &Params::h_max_iter, 1, 1000, true, "Newton-Raphson iteration cap per particle"),
-      real("gamma", &Params::gamma, 1.0001, 10.0, "-", false, "adiabatic index, P = (gamma-1) rho u (seed 000 eq. 3.3.23)"),
-      real("alpha", &Params::alpha, 0.0, 10.0, "-", true, "artificial viscosity, linear term (seed 003 eq. 3.16)"),
-      real("beta", &Params::beta, 0.0, 20.0, "-", true, "artificial viscosity, quadratic term (seed 003 eq. 3.16)"),
-      real("visc_eps", &Params::visc_eps, 1e-6, 1.0, "-", true, "eta^2 = visc_eps h^2 in the viscosity (seed 003 eq. 3.16)"),
-      real("alpha_u", &Params::alpha_u, 0.0, 10.0, "-", true, "artificial thermal conductivity (Price 2008); 0 = off"),
-      choice("integrator", &Params::integrator, {I::Euler, I::RK4, I::Leapfrog, I::PredictorCorrector}, true,
-             "time integrator (seed 000 App. A; seed 001 eqs. 56-59)"),
-      real("dt", &Params::dt, 0.0, 1e6, "time", true, "fixed timestep; 0 = adaptive from cfl"),
-      real("cfl", &Params::cfl, 1e-4, 2.0, "-", true, "Courant factor: dt = cfl min(h/v_sig, sqrt(h/|a|))"),
-      real("t_end", &Params::t_end, 0.0, 1e9, "time", true, "end time of a run"),
-      real("dt_out", &Params::dt_out, 0.0, 1e9, "time", true, "interval between particle outputs; 0 = end only"),
-  };
+  std::vector<ParamInfo> t;
+  // The slots first, in pipeline order; "h_mode" was the smoothing slot's flat key.
+  static const std::string slot_keys[kSlotCount] = {
+      "physics.density", "physics.smoothing", "physics.eos", "physics.force", "physics.viscosity",
+      "physics.xsph", "physics.conduction", "physics.energy", "physics.body_force", "physics.walls"};
+  for (const SlotInfo& s : slot_table())
+    t.push_back(slot(s, slot_keys[static_cast<std::size_t>(s.slot)], s.slot == Slot::Smoothing ? "h_mode" : ""));
+
+  t.push_back(choice<K>({"kernel.type", "choice", "smoothing kernel W (seed 000 eqs. 3.2.6-3.2.9)", "kernel"},
+                        [](Params& p) -> K& { return p.kernel.type; },
+                        {K::M4, K::M5, K::M6, K::Gaussian, K::WendlandC2, K::WendlandC4}));
+  t.push_back(real({"kernel.eta", "dimensionless",
+                    "h = eta (m/rho)^(1/d) (seed 000 eq. 3.3.33); 0 = the kernel's default", "eta"},
+                   [](Params& p) -> double& { return p.kernel.eta; }, 0.0, 4.0));
+  t.push_back(real({"h.tol", "dimensionless", "Newton-Raphson relative tolerance on h (seed 000 eq. 3.5.1)", "h_tol",
+                    kVariableH, true},
+                   [](Params& p) -> double& { return p.h.tol; }, 1e-15, 1e-2));
+  t.push_back(integer({"h.max_iter", "iterations", "Newton-Raphson iteration cap per particle", "h_max_iter",
+                       kVariableH, true},
+                      [](Params& p) -> int& { return p.h.max_iter; }, 1, 1000));
+  t.push_back(real({"gas.gamma", "dimensionless", "adiabatic index, P = (gamma-1) rho u (seed 000 eq. 3.3.23)", "gamma",
+                    kIdealGas, false},
+                   [](Params& p) -> double& { return p.gas.gamma; }, 1.0001, 10.0));
+  t.push_back(real({"gas.cs", "length/time", "isothermal sound speed, P = cs^2 rho", "", kIsothermal, false},
+                   [](Params& p) -> double& { return p.gas.cs; }, 1e-9, 1e9));
+  t.push_back(real({"liquid.rho0", "mass/length^d", "reference density of the Tait EOS (seed 001 eq. 3)", "",
+                    kTait, false},
+                   [](Params& p) -> double& { return p.liquid.rho0; }, 1e-9, 1e9));
+  t.push_back(real({"liquid.c0", "length/time",
+                    "sound speed at rho0: B = rho0 c0^2/gamma (seed 001 §2: c^2 = gamma k/rho0 with k = B)", "",
+                    kTait, true},
+                   [](Params& p) -> double& { return p.liquid.c0; }, 1e-9, 1e9));
+  t.push_back(real({"liquid.gamma", "dimensionless", "Tait exponent, 7 for water (seed 001 eq. 3)", "", kTait, true},
+                   [](Params& p) -> double& { return p.liquid.gamma; }, 1.0, 20.0));
+  t.push_back(real({"liquid.p0", "pressure", "background pressure added to the Tait pressure", "", kTait, true},
+                   [](Params& p) -> double& { return p.liquid.p0; }, -1e12, 1e12));
+  t.push_back(real({"visc.alpha", "dimensionless", "artificial viscosity, linear term (seed 003 eq. 3.16; seed 001 eq. 41)",
+                    "alpha", kMonaghan, true},
+                   [](Params& p) -> double& { return p.visc.alpha; }, 0.0, 10.0));
+  t.push_back(real({"visc.beta", "dimensionless", "artificial viscosity, quadratic term (seed 003 eq. 3.16)", "beta",
+                    kMonaghan, true},
+                   [](Params& p) -> double& { return p.visc.beta; }, 0.0, 20.0));
+  t.push_back(real({"visc.eps", "dimensionless", "eta^2 = eps h^2 regularises 1/r^2 (seed 001 eq. 42: 0.01)",
+                    "visc_eps", kAnyViscosity, true},
+                   [](Params& p) -> double& { return p.visc.eps; }, 1e-6, 1.0));
+  t.push_back(real({"visc.nu", "length^2/time", "kinematic viscosity of the Laplacian viscosity (seed 004; Morris 1997)",
+                    "", kLaplacian, true},
+                   [](Params& p) -> double& { return p.visc.nu; }, 0.0, 1e6));
+  t.push_back(real({"conduction.alpha_u", "dimensionless", "artificial thermal conductivity (Price 2008)", "alpha_u",
+                    kConduction, true},
+                   [](Params& p) -> double& { return p.conduction.alpha_u; }, 0.0, 10.0));
+  t.push_back(real({"xsph.eps", "dimensionless", "XSPH strength epsilon (seed 001 eq. 45: 0.5)", "", kXsph, true},
+                   [](Params& p) -> double& { return p.xsph.eps; }, 0.0, 1.0));
+  t.push_back(real({"body.gx", "length/time^2", "uniform body force, x component", "", kBody, true},
+                   [](Params& p) -> double& { return p.body.gx; }, -1e6, 1e6));
+  t.push_back(real({"body.gy", "length/time^2", "uniform body force, y component", "", kBody, true},
+                   [](Params& p) -> double& { return p.body.gy; }, -1e6, 1e6));
+  t.push_back(real({"body.gz", "length/time^2", "uniform body force, z component", "", kBody, true},
+                   [](Params& p) -> double& { return p.body.gz; }, -1e6, 1e6));
+  t.push_back(real({"walls.D", "length^2/time^2", "Lennard-Jones strength (seed 001 eq. 60: D ~ 5 g H); 0 = the scene's",
+                    "", kLJ, true},
+                   [](Params& p) -> double& { return p.walls.D; }, 0.0, 1e12));
+  t.push_back(real({"walls.p1", "dimensionless", "Lennard-Jones repulsive exponent p1 > p2 (seed 001: 4)", "", kLJ, true},
+                   [](Params& p) -> double& { return p.walls.p1; }, 1.0, 24.0));
+  t.push_back(real({"walls.p2", "dimensionless", "Lennard-Jones attractive exponent (seed 001: 2)", "", kLJ, true},
+                   [](Params& p) -> double& { return p.walls.p2; }, 0.0, 23.0));
+  t.push_back(real({"walls.r0", "length", "Lennard-Jones cut-off (seed 001: the initial spacing); 0 = the scene's", "",
+                    kLJ, true},
+                   [](Params& p) -> double& { return p.walls.r0; }, 0.0, 1e6));
+  t.push_back(real({"correction.min_rcond", "dimensionless",
+                    "below this reciprocal condition number the gradient correction falls back to L = I", "",
+                    kCorrected, true},
+                   [](Params& p) -> double& { return p.correction.min_rcond; }, 0.0, 1.0));
+  t.push_back(choice<I>({"time.integrator", "choice", "time integrator (seed 000 App. A; seed 001 eqs. 56-59)",
+                         "integrator"},
+                        [](Params& p) -> I& { return p.time.integrator; },
+                        {I::Euler, I::RK4, I::Leapfrog, I::PredictorCorrector}));
+  t.push_back(real({"time.dt", "time", "fixed timestep; 0 = adaptive from cfl", "dt"},
+                   [](Params& p) -> double& { return p.time.dt; }, 0.0, 1e6));
+  t.push_back(real({"time.cfl", "dimensionless", "Courant factor: dt = cfl min(h/v_sig, sqrt(h/|a|), stage limits)",
+                    "cfl"},
+                   [](Params& p) -> double& { return p.time.cfl; }, 1e-4, 2.0));
+  t.push_back(real({"time.t_end", "time", "end time of a run", "t_end"},
+                   [](Params& p) -> double& { return p.time.t_end; }, 0.0, 1e9));
+  t.push_back(real({"time.dt_out", "time", "interval between particle outputs; 0 = end only", "dt_out"},
+                   [](Params& p) -> double& { return p.time.dt_out; }, 0.0, 1e9));
+  return t;
 }
 
 }  // namespace
@@ -118,7 +246,7 @@ const std::vector<ParamInfo>& param_table() {
 
 const ParamInfo* find_param(std::string_view key) {
   for (const auto& p : param_table())
-    if (p.key == key) return &p;
+    if (p.key == key || (!p.alias.empty() && p.alias == key)) return &p;
   return nullptr;
 }
 

@@ -1,4 +1,4 @@
-// Names of the runtime choices (used by JSON files, --set and the GUI).
+// Names of the kernel and integrator choices (used by JSON files, --set and the GUI).
 #include "sph/params.h"
 
 namespace sph {
@@ -18,7 +18,6 @@ constexpr std::pair<const char*, KernelType> kKernels[] = {
 constexpr std::pair<const char*, IntegratorType> kIntegrators[] = {
     {"euler", IntegratorType::Euler}, {"rk4", IntegratorType::RK4},
     {"leapfrog", IntegratorType::Leapfrog}, {"predictor_corrector", IntegratorType::PredictorCorrector}};
-constexpr std::pair<const char*, HMode> kHModes[] = {{"variable", HMode::Variable}, {"fixed", HMode::Fixed}};
 
 template <class E, std::size_t N>
 const char* name_of(E e, const std::pair<const char*, E> (&table)[N]) {
@@ -31,9 +30,7 @@ const char* name_of(E e, const std::pair<const char*, E> (&table)[N]) {
 
 const char* to_string(KernelType k) { return name_of(k, kKernels); }
 const char* to_string(IntegratorType i) { return name_of(i, kIntegrators); }
-const char* to_string(HMode m) { return name_of(m, kHModes); }
 bool parse(const std::string& s, KernelType& out) { return parse_enum(s, out, kKernels); }
 bool parse(const std::string& s, IntegratorType& out) { return parse_enum(s, out, kIntegrators); }
-bool parse(const std::string& s, HMode& out) { return parse_enum(s, out, kHModes); }
 
 }  // namespace sph

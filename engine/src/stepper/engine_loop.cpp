@@ -144,8 +144,12 @@ void EngineLoop::apply(const Command& c) {
 
 void EngineLoop::adopt(const InboxBatch& b) {
   if (b.params_version <= adopted_) return;  // superseded by a reset or load carrying newer params
-  if (world_) world_->set_params(b.params);
-  else cfg_.params = b.params;
+  try {
+    if (world_) world_->set_params(b.params);
+    else cfg_.params = b.params;
+  } catch (const std::exception& e) {  // a physics the scene cannot run: keep the old params, say why
+    error_ = e.what();
+  }
   adopted_ = b.params_version;
   anchor_pacing();
 }
@@ -177,7 +181,7 @@ void EngineLoop::rebuild(const RunConfig& cfg) {
 
 void EngineLoop::step() {
   const double t = world_->time();
-  const double t_end = world_->params().t_end;
+  const double t_end = world_->params().time.t_end;
   const bool end_ahead = stop_at_end_ && !reached(t, t_end);
   double dt_max = end_ahead ? t_end - t : 1e300;
   if (record_every_ > 0.0) dt_max = std::min(dt_max, record_t0_ + record_next_ * record_every_ - t);
@@ -239,9 +243,10 @@ void EngineLoop::sample_history() {
   s.t = d.t;
   s.E_kin = d.E_kin;
   s.E_int = d.E_int;
+  s.E_pot = d.E_pot;
   s.E_tot = d.E_tot;
   s.P = std::sqrt(d.P[0] * d.P[0] + d.P[1] * d.P[1] + d.P[2] * d.P[2]);
-  if (world_->has_reference()) s.L1_rho = world_->errors().L1_rho;
+  s.ref = world_->reference_values();
   history_.add(s);
 }
 
@@ -258,14 +263,22 @@ void EngineLoop::publish(int record_index) {
     f.snapshot = world_->snapshot();
     f.diagnostics = world_->diagnostics();
     f.has_reference = world_->has_reference();
-    f.errors = world_->errors();
+    f.ref_columns = world_->reference_columns();
+    f.ref_values = world_->reference_values();
+    f.ref_primary = world_->reference() ? world_->reference()->primary() : -1;
+    f.ref_series = world_->reference() ? world_->reference()->series() : std::vector<std::pair<int, int>>{};
+    f.stages = world_->stage_names();
     f.density = world_->density_stats();
     f.config = world_->config();
   } else {
     f.snapshot = Snapshot{};
     f.diagnostics = Diagnostics{};
     f.has_reference = false;
-    f.errors = ErrorNorms{};
+    f.ref_columns.clear();
+    f.ref_values.clear();
+    f.ref_primary = -1;
+    f.ref_series.clear();
+    f.stages.clear();
     f.density = DensityStats{};
     f.config = cfg_;
   }

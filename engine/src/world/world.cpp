@@ -1,12 +1,13 @@
-// The step loop: boundaries -> ghosts -> neighbours -> density/h -> EOS -> forces, driven by the
-// chosen integrator (seed 000 §3.5, steps 1–9).
+// The step loop (seed 000 §3.5, steps 1-9): boundaries -> ghosts -> neighbours -> the scene's stages in
+// pipeline order, driven by the chosen integrator.
 #include "sph/world.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include "core/parallel.h"
-#include "sph/hydro.h"
+#include "core/pipeline.h"
+#include "core/stage.h"
 
 namespace sph {
 namespace {
@@ -16,29 +17,44 @@ constexpr double kSkin = 1.2;  ///< neighbour lists reach 1.2 x the current h, s
 }  // namespace
 
 DivergedError::DivergedError(std::int64_t particle_, std::int64_t step_, double t_, const std::string& field_)
-    : std::runtime_error("simulation diverged: particle " + std::to_string(particle_) + " has a non-finite " +
-                         field_ + " at step " + std::to_string(step_) + " (t = " + std::to_string(t_) + ")"),
+    : std::runtime_error(particle_ >= 0 ? "simulation diverged: particle " + std::to_string(particle_) +
+                                              " has a non-finite " + field_ + " at step " + std::to_string(step_) +
+                                              " (t = " + std::to_string(t_) + ")"
+                                        : "simulation diverged: " + field_ + " at step " + std::to_string(step_) +
+                                              " (t = " + std::to_string(t_) + ")"),
       particle(particle_), step(step_), t(t_), field(field_) {}
 
-World::World(const RunConfig& cfg) : cfg_(cfg), kernel_(cfg.params.kernel, cfg.scene->dim) {
+World::World(const RunConfig& cfg)
+    : cfg_(cfg), kernel_(cfg.params.kernel.type, cfg.scene->dim), stats_(std::make_unique<EvalStats>()) {
+  check_physics(*cfg_.scene, cfg_.params.physics);
+  pipeline_ = std::make_unique<Pipeline>(cfg_.params.physics, cfg_.scene->dim);
   SceneSetup setup = cfg_.scene->build(cfg_.params, cfg_.values);
   p_ = std::move(setup.particles);
+  p_.partition_by_kind();
+  p_.add_fields(pipeline_->fields());
   domain_ = setup.domain;
-  integrator_ = make_integrator(cfg_.params.integrator);
-  if (cfg_.scene->reference) reference_ = cfg_.scene->reference(cfg_.params, cfg_.values);
+  spacing_ = setup.spacing;
+  wall_strength_ = setup.wall_strength;
+  start_shared_ = FieldSet{}.add(Field::Mass).add(Field::H);
+  for (const EvolvedPair& e : pipeline_->evolved()) start_shared_.add(e.first);
+  integrator_ = make_integrator(cfg_.params.time.integrator);
+  if (cfg_.scene->reference) {
+    reference_ = cfg_.scene->reference(cfg_.params, cfg_.values);
+    if (reference_) ref_columns_ = reference_->columns();
+  }
   apply_boundaries(domain_, p_);
   evaluate();
-  if (cfg_.scene->density_anchor) {
+  if (cfg_.scene->density_anchor && p_.has(Field::Density)) {
     const auto [k, rho_target] = cfg_.scene->density_anchor(cfg_.values);
     const double scale = rho_target / p_[Field::Density][k];
     for (std::size_t i = 0; i < p_.size(); ++i) p_[Field::Mass][i] *= scale;
     evaluate();
   }
-  if (cfg_.scene->initial_pressure && p_.has(Field::Energy)) {
+  if (cfg_.scene->initial_pressure && p_.has(Field::Energy) && p_.has(Field::Density)) {
     auto& u = p_[Field::Energy];
     const auto& rho = p_[Field::Density];
     for (std::size_t i = 0; i < p_.size(); ++i)
-      u[i] = cfg_.scene->initial_pressure(p_.pos(i), cfg_.values) / ((cfg_.params.gamma - 1.0) * rho[i]);
+      u[i] = cfg_.scene->initial_pressure(p_.pos(i), cfg_.values) / ((cfg_.params.gas.gamma - 1.0) * rho[i]);
     evaluate();
   }
   current_ = true;
@@ -47,77 +63,108 @@ World::World(const RunConfig& cfg) : cfg_(cfg), kernel_(cfg.params.kernel, cfg.s
 
 World::~World() = default;
 
-double World::eta() const { return cfg_.params.eta > 0.0 ? cfg_.params.eta : kernel_.default_eta(); }
+double World::eta() const { return cfg_.params.kernel.eta > 0.0 ? cfg_.params.kernel.eta : kernel_.default_eta(); }
+const DensityStats& World::density_stats() const { return stats_->density; }
+std::size_t World::correction_fallbacks() const { return stats_->correction_fallbacks; }
+
+std::vector<std::string> World::stage_names() const {
+  std::vector<std::string> out;
+  for (const auto& s : pipeline_->stages()) out.emplace_back(s->name());
+  return out;
+}
+
+StageContext World::context() const {
+  // Stages get the particles mutable; const callers (potentials, limits) only read them.
+  return StageContext{cfg_.params, kernel_, domain_, const_cast<Particles&>(p_), nl_, h_limit_,
+                      eta(), spacing_, wall_strength_, *stats_};
+}
 
 void World::set_params(const Params& p) {
   const Params old = cfg_.params;
+  if (p.physics != old.physics) {
+    check_physics(*cfg_.scene, p.physics);  // throws before anything changes
+    pipeline_ = std::make_unique<Pipeline>(p.physics, p_.dim());
+    p_.add_fields(pipeline_->fields());
+    start_shared_ = FieldSet{}.add(Field::Mass).add(Field::H);
+    for (const EvolvedPair& e : pipeline_->evolved()) start_shared_.add(e.first);
+    integrator_->reset();
+  }
   cfg_.params = p;
-  if (p.kernel != old.kernel) kernel_ = Kernel(p.kernel, p_.dim());
-  if (p.integrator != old.integrator) integrator_ = make_integrator(p.integrator);
-  current_ = false;  // forces depend on the parameters: re-evaluate before the next step
+  if (p.kernel.type != old.kernel.type) kernel_ = Kernel(p.kernel.type, p_.dim());
+  if (p.time.integrator != old.time.integrator) integrator_ = make_integrator(p.time.integrator);
+  current_ = false;  // rates depend on the parameters: re-evaluate before the next step
   rates_known_ = false;
 }
 
 void World::evaluate() {
-  const Modules& mod = cfg_.scene->modules;
   apply_boundaries(domain_, p_);
   const std::size_t n = p_.size();
   auto& h = p_[Field::H];
+  StageContext ctx = context();
   for (int attempt = 0;; ++attempt) {
     double hmax = 0.0;
 #pragma omp parallel for reduction(max : hmax) if (n >= kParallelMin)
     for (std::size_t i = 0; i < n; ++i) hmax = std::max(hmax, h[i]);
     make_ghosts(domain_, kernel_.support() * kSkin * hmax, p_);
-    copy_ghost_field(p_, Field::Mass);
-    copy_ghost_field(p_, Field::H);
+    copy_ghost_velocity(p_);
+    copy_ghost_fields(p_, start_shared_);
     build_neighbours(p_, h, kernel_.support() * kSkin, nl_);
     h_limit_.resize(n);
 #pragma omp parallel for if (n >= kParallelMin)
     for (std::size_t i = 0; i < n; ++i) h_limit_[i] = kSkin * h[i];
-    if (solve_density(kernel_, cfg_.params, eta(), p_, nl_, h_limit_, dstats_)) break;
-    if (attempt > 20) throw DivergedError(-1, step_, t_, "smoothing length (h does not converge)");
-  }
-  if (mod.hydro) {
-    ideal_gas_eos(cfg_.params, p_);
-    for (Field f : {Field::Density, Field::H, Field::Omega, Field::Pressure, Field::SoundSpeed})
-      copy_ghost_field(p_, f);
-    if (p_.has(Field::Energy)) copy_ghost_field(p_, Field::Energy);
-    copy_ghost_velocity(p_);
-    Params prm = cfg_.params;
-    if (!mod.viscosity) prm.alpha = prm.beta = 0.0;
-    if (!mod.conductivity) prm.alpha_u = 0.0;
-    hydro_forces(kernel_, prm, p_, nl_, mod.energy);
+    if (!pipeline_->sets_acceleration())
+      for (int k = 0; k < 3; ++k) std::fill(p_.a[k].begin(), p_.a[k].begin() + static_cast<std::ptrdiff_t>(n), 0.0);
+    bool complete = true;
+    for (const auto& stage : pipeline_->stages()) {
+      if (!stage->run(ctx)) { complete = false; break; }
+      copy_ghost_fields(p_, stage->shares());
+    }
+    if (complete) break;
+    if (attempt > 20) throw DivergedError(-1, step_, t_, "the smoothing length does not converge");
   }
   ++evaluations_;
   rates_known_ = true;
 }
 
 double World::next_dt() {
-  if (cfg_.params.dt > 0.0) return cfg_.params.dt;
-  // The last evaluation's signal speeds set dt (for RK4 and the predictor-corrector that is a stage
-  // within the last step): evaluating again just for dt would double their cost.
+  if (cfg_.params.time.dt > 0.0) return cfg_.params.time.dt;
+  // The last evaluation's rates set dt (for RK4 and the predictor-corrector that is a stage within the
+  // last step): evaluating again just for dt would double their cost.
   if (!rates_known_) { evaluate(); current_ = true; }
-  const std::size_t n = p_.size();
+  const StageContext ctx = context();
+  double dt = Stage::kNoLimit;
+  for (const auto& s : pipeline_->stages()) dt = std::min(dt, s->dt_limit(ctx));
+  const std::size_t n = p_.fluid();
   const auto& h = p_[Field::H];
-  const auto& vs = p_[Field::SignalSpeed];
-  double dt = 1e300;  // a minimum: the same for any thread count
-#pragma omp parallel for reduction(min : dt) if (n >= kParallelMin)
+  double dt_force = Stage::kNoLimit, dt_move = Stage::kNoLimit;  // minima: the same for any thread count
+#pragma omp parallel for reduction(min : dt_force, dt_move) if (n >= kParallelMin)
   for (std::size_t i = 0; i < n; ++i) {
-    if (vs[i] > 0.0) dt = std::min(dt, h[i] / vs[i]);  // Courant condition
     const double a = std::sqrt(p_.a[0][i] * p_.a[0][i] + p_.a[1][i] * p_.a[1][i] + p_.a[2][i] * p_.a[2][i]);
-    if (a > 0.0) dt = std::min(dt, std::sqrt(h[i] / a));  // force condition
+    if (a > 0.0) dt_force = std::min(dt_force, std::sqrt(h[i] / a));  // force condition
+    const double v = p_.vel(i).norm();
+    if (v > 0.0) dt_move = std::min(dt_move, h[i] / v);
   }
-  return cfg_.params.cfl * dt;
+  dt = std::min(dt, dt_force);
+  // Without forces or signal speeds (free streaming), no particle moves more than h in a step.
+  if (dt == Stage::kNoLimit) dt = dt_move;
+  return cfg_.params.time.cfl * dt;
+}
+
+PhaseSpace World::phase_space() {
+  PhaseSpace s;
+  s.dim = p_.dim();
+  s.n = p_.fluid();  // wall particles do not move
+  for (int k = 0; k < 3; ++k) { s.x[k] = &p_.x[k]; s.v[k] = &p_.v[k]; s.a[k] = &p_.a[k]; }
+  if (pipeline_->drifts())
+    for (int k = 0; k < 3; ++k) s.drift[k] = &p_[component(Field::XsphX, k)];
+  for (const EvolvedPair& e : pipeline_->evolved()) s.evolved.push_back({&p_[e.first], &p_[e.second]});
+  return s;
 }
 
 void World::step(double dt_max) {
   double dt = std::min(next_dt(), dt_max);
-  if (!(dt > 0.0)) throw DivergedError(-1, step_, t_, "timestep");
-  PhaseSpace s;
-  s.dim = p_.dim();
-  s.n = p_.size();
-  for (int k = 0; k < 3; ++k) { s.x[k] = &p_.x[k]; s.v[k] = &p_.v[k]; s.a[k] = &p_.a[k]; }
-  if (cfg_.scene->modules.energy) { s.u = &p_[Field::Energy]; s.dudt = &p_[Field::EnergyRate]; }
+  if (!(dt > 0.0) || !std::isfinite(dt)) throw DivergedError(-1, step_, t_, "no finite timestep");
+  PhaseSpace s = phase_space();
   current_ = integrator_->step(s, [this] { evaluate(); }, dt, current_);
   apply_boundaries(domain_, p_);
   t_ += dt;
@@ -139,8 +186,7 @@ void World::advance_to(double t_target) {
 }
 
 void World::check_finite() const {
-  const std::size_t n = p_.size();
-  auto bad = [&](const std::vector<double>& a, const char* name) {
+  auto bad = [&](const std::vector<double>& a, std::size_t n, const char* name) {
     std::size_t first = n;  // lowest index of a non-finite value: the same for any thread count
 #pragma omp parallel for reduction(min : first) if (n >= kParallelMin)
     for (std::size_t i = 0; i < n; ++i)
@@ -149,9 +195,9 @@ void World::check_finite() const {
   };
   const char* xn[3] = {"x", "y", "z"};
   const char* vn[3] = {"vx", "vy", "vz"};
-  for (int k = 0; k < p_.dim(); ++k) { bad(p_.x[k], xn[k]); bad(p_.v[k], vn[k]); }
+  for (int k = 0; k < p_.dim(); ++k) { bad(p_.x[k], p_.fluid(), xn[k]); bad(p_.v[k], p_.fluid(), vn[k]); }
   for (Field f : {Field::Density, Field::H, Field::Energy, Field::Pressure})
-    if (p_.has(f)) bad(p_[f], std::string(info(f).key).c_str());
+    if (p_.has(f)) bad(p_[f], p_.size(), std::string(info(f).key).c_str());
 }
 
 }  // namespace sph

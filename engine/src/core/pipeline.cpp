@@ -1,0 +1,50 @@
+// Pipeline order: density, smoothing length, EOS, wall pressure, corrections, velocity gradient, XSPH,
+// forces (with viscosity, conduction and the energy equation fused into their loop), continuity rate,
+// wall forces, body force. A slot set to "none" contributes no stage.
+#include "core/pipeline.h"
+
+#include "core/stages.h"
+
+namespace sph {
+
+Pipeline::Pipeline(const Physics& ph, int dim) {
+  auto add = [&](std::unique_ptr<Stage> s) { if (s) stages_.push_back(std::move(s)); };
+  if (ph.density == DensityMode::Summation || ph.density == DensityMode::Volume) add(make_density_summation(ph, dim));
+  if (ph.smoothing == HMode::Evolved) add(make_smoothing_evolved(dim));
+  switch (ph.eos) {
+    case EosType::IdealGas: add(make_eos_ideal_gas()); break;
+    case EosType::Tait: add(make_eos_tait()); break;
+    case EosType::Isothermal: add(make_eos_isothermal()); break;
+    case EosType::None: break;
+  }
+  if (ph.walls == WallType::Dummy) add(make_walls_dummy());
+  if (ph.corrected()) add(make_gradient_correction(dim));
+  if (ph.force == ForceType::Corrected && ph.viscosity == ViscType::Laplacian) add(make_velocity_gradient(dim));
+  if (ph.xsph == Toggle::On) add(make_xsph());
+  switch (ph.force) {
+    case ForceType::Standard: add(make_forces_standard(ph)); break;
+    case ForceType::StandardCorrected: add(make_forces_standard_corrected(ph, dim)); break;
+    case ForceType::Corrected: add(make_forces_corrected(ph, dim)); break;
+    case ForceType::None: break;
+  }
+  if (ph.viscosity == ViscType::Monaghan) add(make_viscosity_monaghan());
+  if (ph.viscosity == ViscType::Laplacian) add(make_viscosity_laplacian());
+  if (ph.conduction == Toggle::On) add(make_conduction());
+  if (ph.energy == Toggle::On) add(make_energy_equation());
+  if (ph.density == DensityMode::Continuity) add(make_density_continuity(ph, dim));
+  if (ph.walls == WallType::LennardJones) add(make_walls_lennard_jones());
+  if (ph.body_force == BodyForce::Uniform) add(make_body_force_uniform());
+
+  fields_.add(Field::Mass).add(Field::H);
+  for (const auto& s : stages_) {
+    fields_ |= s->needs() | s->writes();
+    for (const EvolvedPair& e : s->evolves()) {
+      fields_.add(e.first).add(e.second);
+      evolved_.push_back(e);
+    }
+    sets_a_ = sets_a_ || s->sets_acceleration();
+  }
+  drifts_ = ph.xsph == Toggle::On;
+}
+
+}  // namespace sph

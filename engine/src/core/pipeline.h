@@ -1,0 +1,31 @@
+// The stages of a scene's physics in pipeline order, and the fields they need between them.
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "core/stage.h"
+
+namespace sph {
+
+class Pipeline {
+ public:
+  /// The stages of `ph` (assumed valid: Physics::validate) for a scene of dimension dim.
+  Pipeline(const Physics& ph, int dim);
+  const std::vector<std::unique_ptr<Stage>>& stages() const { return stages_; }
+  /// Every field a stage reads, writes or evolves, plus mass and h.
+  FieldSet fields() const { return fields_; }
+  /// The evolved state fields and their rates.
+  const std::vector<EvolvedPair>& evolved() const { return evolved_; }
+  /// Some stage sets the accelerations (otherwise the world zeroes them).
+  bool sets_acceleration() const { return sets_a_; }
+  /// Particles drift with v + an XSPH correction.
+  bool drifts() const { return drifts_; }
+
+ private:
+  std::vector<std::unique_ptr<Stage>> stages_;
+  FieldSet fields_;
+  std::vector<EvolvedPair> evolved_;
+  bool sets_a_ = false, drifts_ = false;
+};
+
+}  // namespace sph

@@ -1,0 +1,74 @@
+// A stage of the step pipeline: one option of one slot of sph::Physics (density summation, the Tait
+// EOS, XSPH, Lennard-Jones walls, ...). World::evaluate runs the scene's stages in pipeline order; each
+// declares the fields it reads, writes and evolves (so only those are allocated), copies to the ghosts
+// what its neighbours read, contributes its timestep limit and, for conservative forces, a potential.
+// Stages whose per-pair maths is fused into the force loop for speed (viscosity, conduction, the
+// energy equation) are stages too: they declare their fields, limits and evolved pairs and run nothing.
+#pragma once
+#include <cstddef>
+#include <limits>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "sph/density.h"
+#include "sph/domain.h"
+#include "sph/kernel.h"
+#include "sph/neighbours.h"
+#include "sph/params.h"
+#include "sph/particles.h"
+
+namespace sph {
+
+/// Counters the stages fill during one evaluation (reported in the diagnostics).
+struct EvalStats {
+  DensityStats density;                 ///< the summation density / h solve, or neighbour counts
+  std::size_t correction_fallbacks = 0; ///< particles whose gradient correction fell back to L = I
+};
+
+/// What a stage sees: constant configuration, the particles and the neighbour lists of this evaluation.
+struct StageContext {
+  const Params& prm;
+  const Kernel& kernel;
+  const Domain& domain;
+  Particles& p;
+  const NeighbourList& nl;
+  const std::vector<double>& h_limit;  ///< the largest h each particle's list covers [length]
+  double eta;                          ///< effective eta of h = eta (m/rho)^(1/d)
+  double spacing;                      ///< the scene's initial particle spacing [length]
+  double wall_strength;                ///< the scene's Lennard-Jones D [length^2/time^2]
+  EvalStats& stats;
+  /// Wall particles take part in the SPH sums (dummy walls) or only exert their own force (Lennard-Jones).
+  bool walls_in_sums() const { return prm.physics.walls == WallType::Dummy; }
+};
+
+/// An evolved state field and the field holding its time derivative (e.g. rho and drho/dt).
+using EvolvedPair = std::pair<Field, Field>;
+
+class Stage {
+ public:
+  static constexpr double kNoLimit = std::numeric_limits<double>::infinity();
+  virtual ~Stage() = default;
+  virtual std::string_view name() const = 0;
+  /// Fields read (they must be allocated; some other stage or the scene writes them).
+  virtual FieldSet needs() const { return {}; }
+  /// Fields computed at every evaluation.
+  virtual FieldSet writes() const { return {}; }
+  /// Of those, the ones neighbours read: copied to the ghosts after run().
+  virtual FieldSet shares() const { return {}; }
+  /// State fields advanced by the integrator, with their rates.
+  virtual std::vector<EvolvedPair> evolves() const { return {}; }
+  /// True if the stage sets the accelerations (the first force stage); later stages add to them.
+  virtual bool sets_acceleration() const { return false; }
+  /// Computes. Returns false if a particle's h outgrew its neighbour list: the world rebuilds the list
+  /// from the new h and runs the stages again.
+  virtual bool run(StageContext&) { return true; }
+  /// Largest stable dt from this stage, before the Courant factor [time].
+  virtual double dt_limit(const StageContext&) const { return kNoLimit; }
+  /// Potential energy of a conservative force [energy].
+  virtual double potential(const StageContext&) const { return 0.0; }
+  /// Internal energy the stage stores (an EOS) [energy].
+  virtual double internal_energy(const StageContext&) const { return 0.0; }
+};
+
+}  // namespace sph

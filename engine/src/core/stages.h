@@ -1,0 +1,29 @@
+// Factories of the stage options, one per file under physics/ and boundaries/ (see core/stage.h).
+#pragma once
+#include <memory>
+
+#include "core/stage.h"
+
+namespace sph {
+
+std::unique_ptr<Stage> make_density_summation(const Physics& ph, int dim);  // summation | volume, variable | fixed h
+std::unique_ptr<Stage> make_density_continuity(const Physics& ph, int dim);
+std::unique_ptr<Stage> make_smoothing_evolved(int dim);
+std::unique_ptr<Stage> make_eos_ideal_gas();
+std::unique_ptr<Stage> make_eos_tait();
+std::unique_ptr<Stage> make_eos_isothermal();
+std::unique_ptr<Stage> make_walls_dummy();
+std::unique_ptr<Stage> make_gradient_correction(int dim);
+std::unique_ptr<Stage> make_velocity_gradient(int dim);
+std::unique_ptr<Stage> make_xsph();
+std::unique_ptr<Stage> make_forces_standard(const Physics& ph);
+std::unique_ptr<Stage> make_forces_standard_corrected(const Physics& ph, int dim);
+std::unique_ptr<Stage> make_forces_corrected(const Physics& ph, int dim);
+std::unique_ptr<Stage> make_viscosity_monaghan();
+std::unique_ptr<Stage> make_viscosity_laplacian();
+std::unique_ptr<Stage> make_conduction();
+std::unique_ptr<Stage> make_energy_equation();
+std::unique_ptr<Stage> make_walls_lennard_jones();
+std::unique_ptr<Stage> make_body_force_uniform();
+
+}  // namespace sph

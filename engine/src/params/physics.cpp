@@ -1,0 +1,148 @@
+// Slot names, options and the combinations that make no sense (see sph/physics.h).
+#include "sph/physics.h"
+
+#include <stdexcept>
+
+namespace sph {
+namespace {
+
+template <class E>
+struct Names {
+  std::vector<std::pair<std::string, E>> list;
+  std::string name(E e) const {
+    for (const auto& [n, v] : list)
+      if (v == e) return n;
+    return "?";
+  }
+  bool parse(std::string_view s, E& out) const {
+    for (const auto& [n, v] : list)
+      if (s == n) { out = v; return true; }
+    return false;
+  }
+  std::vector<std::string> options() const {
+    std::vector<std::string> o;
+    for (const auto& [n, v] : list) o.push_back(n);
+    return o;
+  }
+};
+
+const Names<DensityMode> kDensity{{{"none", DensityMode::None}, {"summation", DensityMode::Summation},
+                                   {"continuity", DensityMode::Continuity}, {"volume", DensityMode::Volume}}};
+const Names<HMode> kSmoothing{{{"variable", HMode::Variable}, {"fixed", HMode::Fixed}, {"evolved", HMode::Evolved}}};
+const Names<EosType> kEos{{{"none", EosType::None}, {"ideal_gas", EosType::IdealGas}, {"tait", EosType::Tait},
+                           {"isothermal", EosType::Isothermal}}};
+const Names<ForceType> kForce{{{"none", ForceType::None}, {"standard", ForceType::Standard},
+                               {"corrected", ForceType::Corrected}, {"standard_corrected", ForceType::StandardCorrected}}};
+const Names<ViscType> kVisc{{{"none", ViscType::None}, {"monaghan", ViscType::Monaghan}, {"laplacian", ViscType::Laplacian}}};
+const Names<Toggle> kToggle{{{"none", Toggle::Off}, {"on", Toggle::On}}};
+const Names<BodyForce> kBody{{{"none", BodyForce::None}, {"uniform", BodyForce::Uniform}}};
+const Names<WallType> kWalls{{{"none", WallType::None}, {"lennard_jones", WallType::LennardJones}, {"dummy", WallType::Dummy}}};
+
+bool parse_toggle(std::string_view s, Toggle& t) {
+  if (s == "off") { t = Toggle::Off; return true; }  // accepted as a synonym of none
+  return kToggle.parse(s, t);
+}
+
+}  // namespace
+
+const std::array<SlotInfo, kSlotCount>& slot_table() {
+  static const std::array<SlotInfo, kSlotCount> table{{
+      {Slot::Density, "density",
+       "how rho is obtained: summation (seed 000 eq. 3.2.17), continuity (seed 001 eq. 39), volume 1/V = sum W (seed 004)",
+       kDensity.options(), false},
+      {Slot::Smoothing, "smoothing",
+       "smoothing length: variable by Newton-Raphson with grad-h terms (seed 000 eq. 3.5.1), fixed, or evolved from the "
+       "continuity density",
+       kSmoothing.options(), true},
+      {Slot::Eos, "eos",
+       "equation of state: ideal gas (seed 000 eq. 3.3.23), Tait/Cole (seed 001 eq. 3), isothermal", kEos.options(), false},
+      {Slot::Force, "force",
+       "momentum equation: standard (seed 001 eq. 44), corrected (eqs. 48-52), standard-corrected (eqs. 53-55)",
+       kForce.options(), true},
+      {Slot::Viscosity, "viscosity",
+       "Monaghan artificial viscosity Pi (seed 003 eq. 3.16) or a physical Laplacian viscosity from first derivatives "
+       "(seed 004)",
+       kVisc.options(), true},
+      {Slot::Xsph, "xsph", "XSPH: particles move with a smoothed velocity v* (seed 001 eqs. 45-47)", kToggle.options(), true},
+      {Slot::Conduction, "conduction", "artificial thermal conductivity (Price 2008) in the energy equation",
+       kToggle.options(), true},
+      {Slot::Energy, "energy", "internal energy equation du/dt (seed 000 eq. 3.3.19)", kToggle.options(), false},
+      {Slot::BodyForce, "body_force", "external body force: uniform gravity g", kBody.options(), true},
+      {Slot::Walls, "walls",
+       "wall particles: Lennard-Jones repulsion (seed 001 eq. 60) or dummy particles with extrapolated pressure "
+       "(Adami et al. 2012)",
+       kWalls.options(), false},
+  }};
+  return table;
+}
+
+const SlotInfo& slot_info(Slot s) { return slot_table()[static_cast<std::size_t>(s)]; }
+
+std::string Physics::get(Slot s) const {
+  switch (s) {
+    case Slot::Density: return kDensity.name(density);
+    case Slot::Smoothing: return kSmoothing.name(smoothing);
+    case Slot::Eos: return kEos.name(eos);
+    case Slot::Force: return kForce.name(force);
+    case Slot::Viscosity: return kVisc.name(viscosity);
+    case Slot::Xsph: return kToggle.name(xsph);
+    case Slot::Conduction: return kToggle.name(conduction);
+    case Slot::Energy: return kToggle.name(energy);
+    case Slot::BodyForce: return kBody.name(body_force);
+    case Slot::Walls: return kWalls.name(walls);
+    case Slot::Count: break;
+  }
+  throw std::logic_error("Physics::get: no such slot");
+}
+
+bool Physics::set(Slot s, std::string_view o) {
+  switch (s) {
+    case Slot::Density: return kDensity.parse(o, density);
+    case Slot::Smoothing: return kSmoothing.parse(o, smoothing);
+    case Slot::Eos: return kEos.parse(o, eos);
+    case Slot::Force: return kForce.parse(o, force);
+    case Slot::Viscosity: return kVisc.parse(o, viscosity);
+    case Slot::Xsph: return parse_toggle(o, xsph);
+    case Slot::Conduction: return parse_toggle(o, conduction);
+    case Slot::Energy: return parse_toggle(o, energy);
+    case Slot::BodyForce: return kBody.parse(o, body_force);
+    case Slot::Walls: return kWalls.parse(o, walls);
+    case Slot::Count: break;
+  }
+  return false;
+}
+
+std::string Physics::validate() const {
+  auto is = [&](Slot s) { return "physics." + std::string(slot_info(s).key) + " = " + get(s); };
+  if (force != ForceType::None && density == DensityMode::None)
+    return is(Slot::Force) + " needs densities, but " + is(Slot::Density);
+  if (force != ForceType::None && eos == EosType::None)
+    return is(Slot::Force) + " needs pressures, but " + is(Slot::Eos);
+  if (eos != EosType::None && density == DensityMode::None)
+    return is(Slot::Eos) + " needs densities, but " + is(Slot::Density);
+  if (smoothing == HMode::Variable && density != DensityMode::Summation && density != DensityMode::Volume)
+    return is(Slot::Smoothing) + " solves h together with a summed density, but " + is(Slot::Density) +
+           " (choose fixed or evolved)";
+  if (smoothing == HMode::Evolved && density != DensityMode::Continuity)
+    return is(Slot::Smoothing) + " follows the evolved density, but " + is(Slot::Density) + " (it needs continuity)";
+  if (energy == Toggle::On && eos != EosType::IdealGas)
+    return is(Slot::Energy) + " evolves u for the ideal gas, but " + is(Slot::Eos) + " does not depend on u";
+  if (energy == Toggle::On && force != ForceType::Standard)
+    return is(Slot::Energy) + " is the energy equation of the standard grad-h form (seed 000 eq. 3.3.19), but " +
+           is(Slot::Force);
+  if (viscosity != ViscType::None && force == ForceType::None)
+    return is(Slot::Viscosity) + " acts through the momentum equation, but " + is(Slot::Force);
+  if (xsph == Toggle::On && density == DensityMode::None)
+    return is(Slot::Xsph) + " averages with densities, but " + is(Slot::Density);
+  if (conduction == Toggle::On && energy == Toggle::Off)
+    return is(Slot::Conduction) + " conducts internal energy, but " + is(Slot::Energy);
+  if (corrected() && smoothing == HMode::Variable)
+    return is(Slot::Force) + " has no grad-h terms, but " + is(Slot::Smoothing) + " (choose fixed or evolved)";
+  if (walls == WallType::Dummy && eos != EosType::Tait)
+    return is(Slot::Walls) + " inverts the Tait equation for the wall density, but " + is(Slot::Eos);
+  if (walls == WallType::Dummy && force == ForceType::None)
+    return is(Slot::Walls) + " acts through the pressure force, but " + is(Slot::Force);
+  return {};
+}
+
+}  // namespace sph

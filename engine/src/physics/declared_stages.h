@@ -1,0 +1,23 @@
+// Stages whose per-pair terms live inside the force loops (pair_terms.h) for speed: they declare what
+// they allocate and evolve and their timestep limits, and run nothing themselves.
+#pragma once
+#include "core/stage.h"
+
+namespace sph {
+
+/// A stage that only declares fields (and optionally an evolved pair).
+class DeclaredStage : public Stage {
+ public:
+  DeclaredStage(std::string_view name, FieldSet needs, std::vector<EvolvedPair> evolves = {})
+      : name_(name), needs_(needs), evolves_(std::move(evolves)) {}
+  std::string_view name() const override { return name_; }
+  FieldSet needs() const override { return needs_; }
+  std::vector<EvolvedPair> evolves() const override { return evolves_; }
+
+ private:
+  std::string_view name_;
+  FieldSet needs_;
+  std::vector<EvolvedPair> evolves_;
+};
+
+}  // namespace sph

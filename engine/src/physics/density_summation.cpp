@@ -1,0 +1,145 @@
+// Summation density (seed 000 eq. 3.2.17) or volume density 1/V_a = sum_b W_ab (seed 004), with h
+// solved by Newton-Raphson on g(h) = rho(h) - m eta^d / h^d (seed 000 eq. 3.5.1, App. B) and a
+// bisection fallback, or held fixed. Omega_a = 1 + h_a/(d rho_a) sum_b w_b dW_ab/dh (seed 000 eqs.
+// 3.3.2, 3.3.4); Omega = 1 for fixed h.
+#include <algorithm>
+#include <cmath>
+
+#include "core/parallel.h"
+#include "core/stages.h"
+#include "sph/newton.h"
+
+namespace sph {
+namespace {
+
+struct Sums {
+  double rho = 0.0;   ///< sum_b w_b W(r_ab, h), w_b = m_b (mass) or m_a (volume)
+  double drho = 0.0;  ///< sum_b w_b dW(r_ab, h)/dh
+  int neighbours = 0; ///< count of b with r_ab < support h
+};
+
+/// Volume: rho_a = m_a sum_b W_ab (every neighbour weighs m_a). SkipWalls: Lennard-Jones wall
+/// particles are not in the sums.
+template <bool Volume, bool SkipWalls>
+Sums density_sums(const Kernel& K, const Particles& p, std::size_t i, std::span<const std::uint32_t> nb,
+                  const std::vector<double>& m, double h) {
+  Sums s;
+  const double R2 = K.support() * K.support() * h * h;
+  for (std::uint32_t j : nb) {
+    if constexpr (SkipWalls) if (p.kind[j]) continue;
+    const double dx = p.x[0][i] - p.x[0][j], dy = p.x[1][i] - p.x[1][j], dz = p.x[2][i] - p.x[2][j];
+    const double r2 = dx * dx + dy * dy + dz * dz;
+    if (r2 >= R2) continue;
+    const double r = std::sqrt(r2);
+    const double w = Volume ? m[i] : m[j];
+    s.rho += w * K.W(r, h);
+    s.drho += w * K.dWdh(r, h);
+    ++s.neighbours;
+  }
+  return s;
+}
+
+class DensitySummation final : public Stage {
+ public:
+  DensitySummation(bool volume, bool fixed) : volume_(volume), fixed_(fixed) {}
+  std::string_view name() const override { return volume_ ? "density: volume 1/V = sum W" : "density: summation"; }
+  FieldSet needs() const override { return FieldSet{}.add(Field::Mass).add(Field::H); }
+  FieldSet writes() const override {
+    return FieldSet{}.add(Field::Density).add(Field::H).add(Field::Omega).add(Field::Neighbours).add(Field::HIterations);
+  }
+  FieldSet shares() const override { return FieldSet{}.add(Field::Density).add(Field::H).add(Field::Omega); }
+
+  bool run(StageContext& c) override {
+    const bool skip = c.prm.physics.walls == WallType::LennardJones;
+    if (volume_) return skip ? solve<true, true>(c) : solve<true, false>(c);
+    return skip ? solve<false, true>(c) : solve<false, false>(c);
+  }
+
+ private:
+  template <bool Volume, bool SkipWalls>
+  bool solve(StageContext& c) {
+    const Kernel& K = c.kernel;
+    Particles& p = c.p;
+    const std::size_t n = p.fluid();
+    const int d = p.dim();
+    auto& m = p[Field::Mass];
+    auto& rho = p[Field::Density];
+    auto& h = p[Field::H];
+    auto& omega = p[Field::Omega];
+    auto& nneigh = p[Field::Neighbours];
+    auto& hiter = p[Field::HIterations];
+    const double eta_d = std::pow(c.eta, d);
+    const bool fixed = fixed_;
+    const double tol = c.prm.h.tol;
+    const int max_iter = c.prm.h.max_iter;
+    const auto& h_limit = c.h_limit;
+    int overflow = 0;
+    std::size_t bisections = 0;
+
+#pragma omp parallel for schedule(dynamic, 64) reduction(+ : overflow, bisections) if (n >= kParallelMin)
+    for (std::size_t i = 0; i < n; ++i) {
+      const auto nb = c.nl.of(i);
+      Sums s;
+      double hi = h[i];
+      int it = 0;
+      bool converged = true;
+      if (fixed) {
+        s = density_sums<Volume, SkipWalls>(K, p, i, nb, m, hi);
+      } else {
+        // g(h) = rho(h) - m eta^d / h^d  (seed 000 eq. 3.5.1); g' = drho/dh + d m eta^d / h^(d+1)
+        const NewtonResult r = newton_bracketed(
+            [&](double hh, double& g, double& dg) {
+              s = density_sums<Volume, SkipWalls>(K, p, i, nb, m, hh);
+              double hd = hh;
+              for (int k = 1; k < d; ++k) hd *= hh;
+              const double target = m[i] * eta_d / hd;
+              g = s.rho - target;
+              dg = s.drho + d * target / hh;
+            },
+            hi, h_limit[i], tol, max_iter);
+        if (r.hit_upper) { ++overflow; h[i] = h_limit[i]; continue; }
+        bisections += static_cast<std::size_t>(r.bisections);
+        it = r.iterations;
+        converged = r.converged;
+        hi = r.x;  // s holds the sums evaluated at r.x (the last evaluation)
+      }
+      h[i] = hi;
+      rho[i] = s.rho;
+      // Omega = 1 - (dh/drho) sum m dW/dh with dh/drho = -h/(rho d)  (seed 000 eqs. 3.3.2, 3.3.4)
+      omega[i] = fixed ? 1.0 : 1.0 + hi / (d * s.rho) * s.drho;
+      nneigh[i] = s.neighbours;
+      hiter[i] = it + (converged ? 0.0 : 1000.0);  // > 1000 marks non-converged particles
+    }
+    if (overflow > 0) return false;
+
+    double sum_it = 0.0, sum_nb = 0.0;  // sums of integers: exact, so the same for any thread count
+    std::size_t not_converged = 0;
+    int max_it = 0;
+    DensityStats& stats = c.stats.density;
+    stats = DensityStats{};
+    stats.bisections = bisections;
+#pragma omp parallel for reduction(+ : sum_it, sum_nb, not_converged) reduction(max : max_it) if (n >= kParallelMin)
+    for (std::size_t i = 0; i < n; ++i) {
+      int it = static_cast<int>(hiter[i]);
+      if (it >= 1000) { ++not_converged; it -= 1000; hiter[i] = it; }
+      sum_it += it;
+      max_it = std::max(max_it, it);
+      sum_nb += nneigh[i];
+    }
+    stats.not_converged = not_converged;
+    stats.max_iterations = max_it;
+    stats.mean_iterations = n ? sum_it / n : 0.0;
+    stats.mean_neighbours = n ? sum_nb / n : 0.0;
+    return true;
+  }
+
+  bool volume_, fixed_;
+};
+
+}  // namespace
+
+std::unique_ptr<Stage> make_density_summation(const Physics& ph, int) {
+  return std::make_unique<DensitySummation>(ph.density == DensityMode::Volume, ph.smoothing == HMode::Fixed);
+}
+
+}  // namespace sph

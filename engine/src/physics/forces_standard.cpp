@@ -1,0 +1,150 @@
+// The standard momentum equation, with its fused viscosity, conduction and energy terms:
+//   dv_a/dt = -sum_b m_b [P_a/(Omega_a rho_a^2) grad W_ab(h_a) + P_b/(Omega_b rho_b^2) grad W_ab(h_b)
+//                         + Pi_ab grad W_ab(mean)]                    (seed 000 eq. 3.3.17; seed 001 eq. 44)
+//   du_a/dt = P_a/(Omega_a rho_a^2) sum_b m_b v_ab . grad W_ab(h_a)    (seed 000 eq. 3.3.19)
+//           + 1/2 sum_b m_b Pi_ab v_ab . grad W_ab(mean)          (viscous heating: energy conserved)
+//           + sum_b m_b alpha_u v_sig,u (u_a - u_b)/rho_ab r_hat . grad W_ab(mean) (Price 2008 conduction)
+// Omega = 1 without a summation density (continuity densities have no grad-h terms). The Laplacian
+// viscosity adds sum_b m_b (mu_a + mu_b)/(rho_a rho_b) (r.grad W)/(r^2 + eps h^2) v_ab (Morris 1997).
+// A gather over the neighbour list: each particle sums its own neighbours in list order.
+#include <algorithm>
+#include <cmath>
+
+#include "core/parallel.h"
+#include "core/stages.h"
+#include "courant.h"
+#include "pair_terms.h"
+
+namespace sph {
+namespace {
+
+template <bool GradH, ViscType V, bool Energy>
+void standard_loop(const StageContext& c) {
+  const Kernel& K = c.kernel;
+  const Params& prm = c.prm;
+  Particles& p = c.p;
+  const std::size_t n = p.fluid();
+  const auto& m = p[Field::Mass];
+  const auto& rho = p[Field::Density];
+  const auto& h = p[Field::H];
+  const std::vector<double>* omega = GradH ? &p[Field::Omega] : nullptr;
+  const auto& P = p[Field::Pressure];
+  const auto& cs = p[Field::SoundSpeed];
+  auto& vsig = p[Field::SignalSpeed];
+  const std::vector<double>* u = Energy ? &p[Field::Energy] : nullptr;
+  std::vector<double>* dudt = Energy ? &p[Field::EnergyRate] : nullptr;
+  const bool conduction = Energy && prm.physics.conduction == Toggle::On;
+  const bool skip_walls = prm.physics.walls == WallType::LennardJones;
+  const double alpha = prm.visc.alpha, beta = prm.visc.beta, eps = prm.visc.eps, nu = prm.visc.nu;
+  const double alpha_u = prm.conduction.alpha_u;
+  const double support = K.support();
+  const double alpha_scale = V == ViscType::Monaghan ? std::max(1.0, alpha) : 1.0;
+  const double beta_scale = V == ViscType::Monaghan ? std::max(1.0, 0.5 * beta) : 1.0;
+
+#pragma omp parallel for schedule(dynamic, 64) if (n >= kParallelMin)
+  for (std::size_t i = 0; i < n; ++i) {
+    const double xi = p.x[0][i], yi = p.x[1][i], zi = p.x[2][i];
+    const double vxi = p.v[0][i], vyi = p.v[1][i], vzi = p.v[2][i];
+    const double hi = h[i];
+    const double Ai = GradH ? P[i] / ((*omega)[i] * rho[i] * rho[i]) : P[i] / (rho[i] * rho[i]);
+    double ax = 0.0, ay = 0.0, az = 0.0, du = 0.0, visc_heat = 0.0, cond = 0.0;
+    double vs = cs[i];
+    for (std::uint32_t j : c.nl.of(i)) {
+      if (j == i) continue;
+      if (skip_walls && p.kind[j]) continue;
+      const double dx = xi - p.x[0][j], dy = yi - p.x[1][j], dz = zi - p.x[2][j];
+      const double r2 = dx * dx + dy * dy + dz * dz;
+      const double hj = h[j];
+      const double R = support * std::max(hi, hj);
+      if (r2 >= R * R || r2 == 0.0) continue;
+      const double r = std::sqrt(r2);
+      const double rinv = 1.0 / r;
+      const double dWi = K.dWdr(r, hi), dWj = K.dWdr(r, hj);  // dW/dr; grad W = r_hat dW/dr
+      const double dWm = 0.5 * (dWi + dWj);
+      const double Aj = GradH ? P[j] / ((*omega)[j] * rho[j] * rho[j]) : P[j] / (rho[j] * rho[j]);
+      const double dvx = vxi - p.v[0][j], dvy = vyi - p.v[1][j], dvz = vzi - p.v[2][j];
+      const double vdotr = dvx * dx + dvy * dy + dvz * dz;
+      const double w = vdotr * rinv;
+      vs = std::max(vs, pair::signal_speed(cs[i], cs[j], w, alpha_scale, beta_scale));
+      double Pi = 0.0;
+      if constexpr (V == ViscType::Monaghan)
+        Pi = pair::monaghan_pi(vdotr, r2, hi, hj, rho[i], rho[j], cs[i], cs[j], alpha, beta, eps);
+      const double f = V == ViscType::Monaghan ? -m[j] * (Ai * dWi + Aj * dWj + Pi * dWm) * rinv
+                                               : -m[j] * (Ai * dWi + Aj * dWj) * rinv;  // times r_vec below
+      ax += f * dx;
+      ay += f * dy;
+      az += f * dz;
+      if constexpr (V == ViscType::Laplacian) {
+        const double k = pair::laplacian_factor(m[j], nu, rho[i], rho[j], r * dWm, r2, 0.5 * (hi + hj), eps);
+        ax += k * dvx;
+        ay += k * dvy;
+        az += k * dvz;
+      }
+      if constexpr (Energy) {
+        du += m[j] * w * dWi;  // times Ai below (seed 000 eq. 3.3.19)
+        if constexpr (V == ViscType::Monaghan) visc_heat += 0.5 * m[j] * Pi * w * dWm;  // dissipation -> heat
+        if constexpr (V == ViscType::Laplacian) {
+          // the Laplacian term's work -k v_ab . v_ab / 2 per pair share, as heat
+          const double k = pair::laplacian_factor(m[j], nu, rho[i], rho[j], r * dWm, r2, 0.5 * (hi + hj), eps);
+          visc_heat -= 0.5 * k * (dvx * dvx + dvy * dvy + dvz * dvz);
+        }
+        if (conduction && alpha_u > 0.0) {
+          const double rhom = 0.5 * (rho[i] + rho[j]);
+          const double vsu = std::sqrt(std::abs(P[i] - P[j]) / rhom);
+          cond += m[j] * alpha_u * vsu * ((*u)[i] - (*u)[j]) / rhom * dWm;
+        }
+      }
+    }
+    p.a[0][i] = ax;
+    p.a[1][i] = ay;
+    p.a[2][i] = az;
+    vsig[i] = vs;
+    if constexpr (Energy) (*dudt)[i] = Ai * du + visc_heat + cond;
+  }
+}
+
+template <bool GradH, ViscType V>
+void dispatch_energy(const StageContext& c, bool energy) {
+  if (energy) standard_loop<GradH, V, true>(c);
+  else standard_loop<GradH, V, false>(c);
+}
+
+template <bool GradH>
+void dispatch_visc(const StageContext& c, ViscType v, bool energy) {
+  switch (v) {
+    case ViscType::None: dispatch_energy<GradH, ViscType::None>(c, energy); break;
+    case ViscType::Monaghan: dispatch_energy<GradH, ViscType::Monaghan>(c, energy); break;
+    case ViscType::Laplacian: dispatch_energy<GradH, ViscType::Laplacian>(c, energy); break;
+  }
+}
+
+class ForcesStandard final : public Stage {
+ public:
+  explicit ForcesStandard(const Physics& ph)
+      : grad_h_(ph.density == DensityMode::Summation || ph.density == DensityMode::Volume),
+        energy_(ph.energy == Toggle::On) {}
+  std::string_view name() const override { return "forces: standard"; }
+  FieldSet needs() const override {
+    FieldSet f;
+    f.add(Field::Mass).add(Field::Density).add(Field::H).add(Field::Pressure).add(Field::SoundSpeed);
+    if (grad_h_) f.add(Field::Omega);
+    return f;
+  }
+  FieldSet writes() const override { return FieldSet{}.add(Field::SignalSpeed); }
+  bool sets_acceleration() const override { return true; }
+  bool run(StageContext& c) override {
+    if (grad_h_) dispatch_visc<true>(c, c.prm.physics.viscosity, energy_);
+    else dispatch_visc<false>(c, c.prm.physics.viscosity, energy_);
+    return true;
+  }
+  double dt_limit(const StageContext& c) const override { return courant_limit(c.p); }
+
+ private:
+  bool grad_h_, energy_;
+};
+
+}  // namespace
+
+std::unique_ptr<Stage> make_forces_standard(const Physics& ph) { return std::make_unique<ForcesStandard>(ph); }
+
+}  // namespace sph
