@@ -10,5 +10,6 @@ SceneSpec box_lattice_scene();
 SceneSpec box_perturbed_scene();
 SceneSpec box_random_scene();
 SceneSpec tube2d_scene();
+SceneSpec elliptical_drop_scene();
 
 }  // namespace sph::scenes

@@ -24,8 +24,8 @@ enum class Field : std::uint8_t {
   HIterations, ///< Newton-Raphson iterations of the last density solve
   DensityRate, ///< drho/dt of the continuity equation (seed 001 eq. 39) [mass/(length^d time)]
   Shepard,     ///< S = sum_b V_b W_ab, the order-0 kernel correction is W/S (seed 001 eq. 33) [dimensionless]
-  ShepardGradX, ShepardGradY, ShepardGradZ,  ///< grad S (seed 001 eq. 34) [1/length]
-  CorrXX, CorrXY, CorrXZ, CorrYX, CorrYY, CorrYZ, CorrZX, CorrZY, CorrZZ,  ///< gradient correction L (seed 001 eq. 35)
+  CorrCX, CorrCY, CorrCZ,  ///< c = L grad S / S^2: the corrected gradient is G = A grad W - W c (seed 001 eq. 36) [1/length]
+  CorrXX, CorrXY, CorrXZ, CorrYX, CorrYY, CorrYZ, CorrZX, CorrZY, CorrZZ,  ///< A = L / S, L of seed 001 eq. 35
   CorrFallback,  ///< 1 where the gradient correction was ill-conditioned and fell back to L = I
   XsphX, XsphY, XsphZ,  ///< XSPH velocity correction v* - v (seed 001 eq. 45) [length/time]
   VelGradXX, VelGradXY, VelGradXZ, VelGradYX, VelGradYY, VelGradYZ, VelGradZX, VelGradZY, VelGradZZ,  ///< dv_k/dx_l (seed 001 eq. 52) [1/time]
@@ -96,18 +96,18 @@ constexpr std::array<FieldInfo, kFieldCount> kFieldInfo{{
     {"hiter", "h iterations", 0, false, false},
     {"drhodt", "continuity drho/dt", 0, true, false},
     {"shepard", "kernel sum S = sum V W", 0, true, false},
-    {"dSx", "grad S x", field_detail::ax(0), false, false},
-    {"dSy", "grad S y", field_detail::ax(1), false, false},
-    {"dSz", "grad S z", field_detail::ax(2), false, false},
-    {"Lxx", "correction L_xx", field_detail::tx(0, 0), false, false},
-    {"Lxy", "correction L_xy", field_detail::tx(0, 1), false, false},
-    {"Lxz", "correction L_xz", field_detail::tx(0, 2), false, false},
-    {"Lyx", "correction L_yx", field_detail::tx(1, 0), false, false},
-    {"Lyy", "correction L_yy", field_detail::tx(1, 1), false, false},
-    {"Lyz", "correction L_yz", field_detail::tx(1, 2), false, false},
-    {"Lzx", "correction L_zx", field_detail::tx(2, 0), false, false},
-    {"Lzy", "correction L_zy", field_detail::tx(2, 1), false, false},
-    {"Lzz", "correction L_zz", field_detail::tx(2, 2), false, false},
+    {"cx", "correction c_x = (L grad S)_x / S^2", field_detail::ax(0), false, false},
+    {"cy", "correction c_y", field_detail::ax(1), false, false},
+    {"cz", "correction c_z", field_detail::ax(2), false, false},
+    {"Axx", "correction A_xx = L_xx / S", field_detail::tx(0, 0), false, false},
+    {"Axy", "correction A_xy", field_detail::tx(0, 1), false, false},
+    {"Axz", "correction A_xz", field_detail::tx(0, 2), false, false},
+    {"Ayx", "correction A_yx", field_detail::tx(1, 0), false, false},
+    {"Ayy", "correction A_yy", field_detail::tx(1, 1), false, false},
+    {"Ayz", "correction A_yz", field_detail::tx(1, 2), false, false},
+    {"Azx", "correction A_zx", field_detail::tx(2, 0), false, false},
+    {"Azy", "correction A_zy", field_detail::tx(2, 1), false, false},
+    {"Azz", "correction A_zz", field_detail::tx(2, 2), false, false},
     {"fallback", "gradient correction fell back (1)", 0, true, false},
     {"xsph_x", "XSPH correction x", field_detail::ax(0), false, false},
     {"xsph_y", "XSPH correction y", field_detail::ax(1), false, false},

@@ -32,6 +32,17 @@ class Kernel {
   /// dW/dh (r, h) = -(d W + r dW/dr)/h (used by the Omega term, seed 000 eq. 3.3.2).
   double dWdh(double r, double h) const;
 
+  /// Per-particle factors of W and dW/dr for one h, computed once per particle in the pair loops:
+  /// W = w_norm w(q), dW/dr = dw_norm dw/dq(q), q = r hinv.
+  struct Scale {
+    double hinv = 0.0, w_norm = 0.0, dw_norm = 0.0;
+  };
+  Scale scale(double h) const;
+  /// w(q) and dw/dq(q) together (one pass over the shared polynomial terms; branch-free for M4).
+  void w_dw(double q, double& w, double& dw) const;
+  /// W(r, h) and dW/dr(r, h) from the factors of h.
+  void eval(const Scale& s, double r, double& W, double& dWdr) const;
+
  private:
   KernelType type_;
   int dim_;

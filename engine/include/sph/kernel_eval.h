@@ -80,6 +80,34 @@ inline double Kernel::dw(double q) const {
   return 0.0;
 }
 
+inline Kernel::Scale Kernel::scale(double h) const {
+  Scale s;
+  s.hinv = 1.0 / h;
+  double hd = s.hinv;
+  for (int k = 1; k < dim_; ++k) hd *= s.hinv;
+  s.w_norm = sigma_ * hd;
+  s.dw_norm = sigma_ * hd * s.hinv;
+  return s;
+}
+
+[[gnu::always_inline]] inline void Kernel::w_dw(double q, double& w_out, double& dw_out) const {
+  if (type_ == KernelType::M4) {  // seed 000 eq. 3.2.7, as clamped powers: no branch on q
+    const double t = q < 2.0 ? 2.0 - q : 0.0, u = q < 1.0 ? 1.0 - q : 0.0;
+    w_out = 0.25 * t * t * t - u * u * u;
+    dw_out = -0.75 * t * t + 3.0 * u * u;
+    return;
+  }
+  w_out = w(q);
+  dw_out = dw(q);
+}
+
+[[gnu::always_inline]] inline void Kernel::eval(const Scale& s, double r, double& W_out, double& dWdr_out) const {
+  double w0, dw0;
+  w_dw(r * s.hinv, w0, dw0);
+  W_out = s.w_norm * w0;
+  dWdr_out = s.dw_norm * dw0;
+}
+
 inline double Kernel::W(double r, double h) const {
   const double hinv = 1.0 / h;
   double hd = hinv;

@@ -21,6 +21,14 @@ struct KernelParams {
   bool operator==(const KernelParams&) const = default;
 };
 
+/// The continuity density (physics.density = continuity).
+struct DensityParams {
+  int reinit_every = 0;  ///< every this many steps, rho is re-initialised by the MLS-corrected kernel sum
+                         ///< (seed 001 eqs. 19-22; Colagrossi & Landrini 2003); 0 = never
+  double diffusion = 0.0;  ///< delta of the density diffusion term (Molteni & Colagrossi 2009) [dimensionless]
+  bool operator==(const DensityParams&) const = default;
+};
+
 /// Newton-Raphson solve of h (physics.smoothing = variable).
 struct SmoothingParams {
   double tol = 1e-10;  ///< relative tolerance on h [dimensionless]
@@ -89,7 +97,8 @@ struct WallParams {
   bool operator==(const WallParams&) const = default;
 };
 
-/// Kernel and gradient corrections (physics.force = corrected or standard_corrected; seed 001 eqs. 17-37).
+/// Kernel and gradient corrections (physics.force = corrected or standard_corrected, and the MLS density
+/// re-initialisation; seed 001 eqs. 17-37).
 struct CorrectionParams {
   double min_rcond = 0.05;  ///< below this reciprocal condition number of the gradient-correction matrix,
                             ///< L = I is used instead (free surfaces, few neighbours) [dimensionless]
@@ -99,6 +108,7 @@ struct CorrectionParams {
 struct Params {
   Physics physics;           ///< the stage chosen for every slot
   KernelParams kernel;       ///< kernel.*
+  DensityParams density;     ///< density.*
   SmoothingParams h;         ///< h.*
   TimeParams time;           ///< time.*
   GasParams gas;             ///< gas.*

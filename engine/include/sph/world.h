@@ -82,6 +82,10 @@ class World {
 
  private:
   StageContext context() const;
+  /// Ghosts and neighbour lists for the current state (the start of every evaluation).
+  void prepare_neighbours();
+  /// Stage actions due after a completed step (e.g. density re-initialisation).
+  void after_step();
   void check_finite() const;
   PhaseSpace phase_space();
 
@@ -99,6 +103,7 @@ class World {
   std::unique_ptr<EvalStats> stats_;
   std::vector<double> h_limit_;
   double t_ = 0.0, dt_last_ = 0.0;
+  double dt_first_ = 0.0;     ///< the first adaptive dt (a collapse far below it is a blow-up)
   std::int64_t step_ = 0, evaluations_ = 0;
   bool current_ = false;      ///< rates belong to the current state
   bool rates_known_ = false;  ///< signal speeds from some evaluation under the current params (for dt)

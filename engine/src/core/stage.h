@@ -6,6 +6,7 @@
 // energy equation) are stages too: they declare their fields, limits and evolved pairs and run nothing.
 #pragma once
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <string_view>
 #include <utility>
@@ -63,6 +64,11 @@ class Stage {
   /// Computes. Returns false if a particle's h outgrew its neighbour list: the world rebuilds the list
   /// from the new h and runs the stages again.
   virtual bool run(StageContext&) { return true; }
+  /// Whether the stage acts on the state after step number `step` (counted from 1) has completed.
+  virtual bool acts_after(const Params&, std::int64_t /*step*/) const { return false; }
+  /// That action (e.g. re-initialising rho), with fresh ghosts and neighbour lists; the rates of the
+  /// last evaluation are then stale and the next step evaluates first.
+  virtual void after_step(StageContext&) {}
   /// Largest stable dt from this stage, before the Courant factor [time].
   virtual double dt_limit(const StageContext&) const { return kNoLimit; }
   /// Potential energy of a conservative force [energy].

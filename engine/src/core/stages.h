@@ -8,6 +8,12 @@ namespace sph {
 
 std::unique_ptr<Stage> make_density_summation(const Physics& ph, int dim);  // summation | volume, variable | fixed h
 std::unique_ptr<Stage> make_density_continuity(const Physics& ph, int dim);
+/// The continuity rate is summed inside the force loop (one pass over the neighbours instead of two):
+/// for the barotropic standard and standard-corrected loops. The continuity stage then only declares it.
+inline bool fuses_continuity(const Physics& ph) {
+  if (ph.density != DensityMode::Continuity) return false;
+  return ph.force == ForceType::StandardCorrected || (ph.force == ForceType::Standard && ph.energy == Toggle::Off);
+}
 std::unique_ptr<Stage> make_smoothing_evolved(int dim);
 std::unique_ptr<Stage> make_eos_ideal_gas();
 std::unique_ptr<Stage> make_eos_tait();

@@ -117,6 +117,8 @@ ParamInfo slot(const SlotInfo& s, std::string_view key, std::string_view alias) 
 using Owner = Common::Owner;
 const Owner kVariableH{"the Newton-Raphson smoothing-length solve", Slot::Smoothing,
                        [](const Params& p) { return p.physics.smoothing == HMode::Variable; }};
+const Owner kContinuity{"the continuity density", Slot::Density,
+                        [](const Params& p) { return p.physics.density == DensityMode::Continuity; }};
 const Owner kIdealGas{"the ideal-gas equation of state", Slot::Eos,
                       [](const Params& p) { return p.physics.eos == EosType::IdealGas; }};
 const Owner kIsothermal{"the isothermal equation of state", Slot::Eos,
@@ -135,8 +137,11 @@ const Owner kBody{"the body-force stage", Slot::BodyForce,
                   [](const Params& p) { return p.physics.body_force == BodyForce::Uniform; }};
 const Owner kLJ{"the Lennard-Jones wall stage", Slot::Walls,
                 [](const Params& p) { return p.physics.walls == WallType::LennardJones; }};
-const Owner kCorrected{"the kernel-gradient correction of the corrected formulations", Slot::Force,
-                       [](const Params& p) { return p.physics.corrected(); }};
+const Owner kCorrected{"the kernel corrections (corrected formulations, MLS density re-initialisation)", Slot::Force,
+                       [](const Params& p) {
+                         return p.physics.corrected() ||
+                                (p.physics.density == DensityMode::Continuity && p.density.reinit_every > 0);
+                       }};
 
 std::vector<ParamInfo> build() {
   using K = KernelType;
@@ -155,6 +160,16 @@ std::vector<ParamInfo> build() {
   t.push_back(real({"kernel.eta", "dimensionless",
                     "h = eta (m/rho)^(1/d) (seed 000 eq. 3.3.33); 0 = the kernel's default", "eta"},
                    [](Params& p) -> double& { return p.kernel.eta; }, 0.0, 4.0));
+  t.push_back(integer({"density.reinit_every", "steps",
+                       "re-initialise rho by the MLS-corrected kernel sum every this many steps (seed 001 eqs. "
+                       "19-22; Colagrossi & Landrini 2003); 0 = never",
+                       "", kContinuity, true},
+                      [](Params& p) -> int& { return p.density.reinit_every; }, 0, 100000));
+  t.push_back(real({"density.diffusion", "dimensionless",
+                    "delta of the density diffusion 2 delta h c0 sum_b V_b (rho_a - rho_b) dW/dr / r (Molteni & "
+                    "Colagrossi 2009): damps the pressure noise of weakly compressible flows; 0 = off",
+                    "", kContinuity, true},
+                   [](Params& p) -> double& { return p.density.diffusion; }, 0.0, 1.0));
   t.push_back(real({"h.tol", "dimensionless", "Newton-Raphson relative tolerance on h (seed 000 eq. 3.5.1)", "h_tol",
                     kVariableH, true},
                    [](Params& p) -> double& { return p.h.tol; }, 1e-15, 1e-2));
@@ -211,7 +226,7 @@ std::vector<ParamInfo> build() {
                     kLJ, true},
                    [](Params& p) -> double& { return p.walls.r0; }, 0.0, 1e6));
   t.push_back(real({"correction.min_rcond", "dimensionless",
-                    "below this reciprocal condition number the gradient correction falls back to L = I", "",
+                    "below this reciprocal condition number a kernel or gradient correction falls back to order 0", "",
                     kCorrected, true},
                    [](Params& p) -> double& { return p.correction.min_rcond; }, 0.0, 1.0));
   t.push_back(choice<I>({"time.integrator", "choice", "time integrator (seed 000 App. A; seed 001 eqs. 56-59)",

@@ -1,11 +1,16 @@
 // Corrected SPH (seed 001 eqs. 48-52): the momentum equation as the divergence of the Cauchy stress
-// with corrected kernel gradients G (corrected_kernel.h),
-//   dv_a/dt = (1/rho_a) sum_b V_b (T_b - T_a) . G_a(b),  T = -P I + 2 mu (D - tr D / 3 I),  mu = rho nu,
-// D from the corrected velocity gradient (eq. 52) when physics.viscosity = laplacian. Exact for linear
-// stress fields. Since sum_b V_b G_a(b) = 0, subtracting T_a changes nothing but round-off. Seed 001
-// eq. 51 prints T = +P I + ..., against its own eq. 2 (T = -P I + ...): the physical sign is used here.
-// With physics.viscosity = monaghan, Pi_ab acts as a pair term -sum_b m_b Pi_ab (G_a(b) - G_b(a))/2.
-// This form is not antisymmetric in a and b: momentum is conserved only to the truncation error.
+// T = -P I + 2 mu (D - tr D / 3 I), mu = rho nu, with corrected kernel gradients G (corrected_kernel.h)
+// and D from the corrected velocity gradient (eq. 52) when physics.viscosity = laplacian:
+//   dv_a/dt = sum_b m_b [T_a/rho_a^2 . G_a(b) - T_b/rho_b^2 . G_b(a)]
+// Seed 001 eq. 48 writes the collocation form (1/rho_a) sum_b V_b T_b . G_a(b); tried here on the
+// elliptical drop (dx = 0.025) it is violently unstable: E_kin grew from 7.9e6 to 1e38-1e58 J/m within
+// 2 ms with any of alpha = 0.1-0.5, XSPH or a Laplacian viscosity (the collocation gradient and the
+// continuity divergence are not adjoint, so nothing bounds the energy). The pairwise form above (Bonet
+// & Lok 1999, §5) is antisymmetric in a and b, so it conserves linear momentum, and with the continuity
+// equation it conserves energy to O(rho_a/rho_b - 1); it is exact for linear stress fields where L is
+// exact. Seed 001 eq. 51 prints T = +P I + ..., against its own eq. 2 (T = -P I + ...): the physical sign
+// is used. With physics.viscosity = monaghan, Pi_ab acts as the pair term -sum_b m_b Pi_ab (G_a(b) -
+// G_b(a))/2, as in the standard-corrected form.
 #include <algorithm>
 #include <cmath>
 
@@ -68,8 +73,10 @@ class ForcesCorrected final : public Stage {
 #pragma omp parallel for schedule(dynamic, 64) if (n >= kParallelMin)
     for (std::size_t i = 0; i < n; ++i) {
       const double hi = h[i];
+      const Kernel::Scale si = K.scale(hi);
       double Ti[9], Tj[9];
       stress(i, Ti);
+      for (double& t : Ti) t /= rho[i] * rho[i];
       double acc[3] = {0.0, 0.0, 0.0};
       double vs = cs[i];
       for (std::uint32_t j : c.nl.of(i)) {
@@ -86,27 +93,26 @@ class ForcesCorrected final : public Stage {
         const double R = support * std::max(hi, hj);
         if (r2 >= R * R || r2 == 0.0) continue;
         const double rr = std::sqrt(r2), rinv = 1.0 / rr;
-        double Gi[3];
-        corr.gradient(i, r, K.W(rr, hi), K.dWdr(rr, hi), rinv, Gi);
+        double Wi, dWi, Wj, dWj;
+        K.eval(si, rr, Wi, dWi);
+        if (hj == hi) { Wj = Wi; dWj = dWi; }  // fixed h: the same kernel values
+        else K.eval(K.scale(hj), rr, Wj, dWj);
+        double Gi[3], Gj[3];
+        corr.gradient(i, r, Wi, dWi * rinv, Gi);
+        corr.gradient(j, mr, Wj, dWj * rinv, Gj);
         stress(j, Tj);
-        const double Vj = m[j] / rho[j];
-        for (int k = 0; k < d; ++k) {
-          double tg = 0.0;
-          for (int l = 0; l < d; ++l) tg += (Tj[3 * k + l] - Ti[3 * k + l]) * Gi[l];
-          acc[k] += Vj * tg;
-        }
+        const double inv_rhoj2 = 1.0 / (rho[j] * rho[j]);
         const double vdotr = dv[0] * r[0] + dv[1] * r[1] + dv[2] * r[2];
         vs = std::max(vs, pair::signal_speed(cs[i], cs[j], vdotr * rinv, alpha_scale, beta_scale));
-        if (monaghan) {
-          const double Pi = pair::monaghan_pi(vdotr, r2, hi, hj, rho[i], rho[j], cs[i], cs[j], alpha, beta, eps);
-          if (Pi != 0.0) {
-            double Gj[3];
-            corr.gradient(j, mr, K.W(rr, hj), K.dWdr(rr, hj), rinv, Gj);
-            for (int k = 0; k < d; ++k) acc[k] -= m[j] * Pi * 0.5 * (Gi[k] - Gj[k]) * rho[i];  // / rho_i below
-          }
+        const double Pi =
+            monaghan ? pair::monaghan_pi(vdotr, r2, hi, hj, rho[i], rho[j], cs[i], cs[j], alpha, beta, eps) : 0.0;
+        for (int k = 0; k < d; ++k) {
+          double t = 0.0;
+          for (int l = 0; l < d; ++l) t += Ti[3 * k + l] * Gi[l] - Tj[3 * k + l] * inv_rhoj2 * Gj[l];
+          acc[k] += m[j] * (t - Pi * 0.5 * (Gi[k] - Gj[k]));
         }
       }
-      for (int k = 0; k < 3; ++k) p.a[k][i] = acc[k] / rho[i];
+      for (int k = 0; k < 3; ++k) p.a[k][i] = acc[k];
       vsig[i] = vs;
     }
     return true;

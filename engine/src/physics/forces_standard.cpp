@@ -18,8 +18,10 @@
 namespace sph {
 namespace {
 
-template <bool GradH, ViscType V, bool Energy>
-void standard_loop(const StageContext& c) {
+/// Cont: also the continuity rate drho_a/dt = rho_a sum_b V_b (v*_a - v*_b) . grad W_ab(h_a) with its
+/// density diffusion (density_continuity.cpp), in the same pass (barotropic flows only).
+template <bool GradH, ViscType V, bool Energy, bool Cont>
+void standard_loop(StageContext& c) {
   const Kernel& K = c.kernel;
   const Params& prm = c.prm;
   Particles& p = c.p;
@@ -40,8 +42,16 @@ void standard_loop(const StageContext& c) {
   const double support = K.support();
   const double alpha_scale = V == ViscType::Monaghan ? std::max(1.0, alpha) : 1.0;
   const double beta_scale = V == ViscType::Monaghan ? std::max(1.0, 0.5 * beta) : 1.0;
+  double* rate = Cont ? p[Field::DensityRate].data() : nullptr;
+  double* nneigh = Cont ? p[Field::Neighbours].data() : nullptr;
+  const bool xsph = Cont && prm.physics.xsph == Toggle::On;
+  const double* xs[3] = {nullptr, nullptr, nullptr};  // XSPH corrections v* - v
+  if (xsph)
+    for (int k = 0; k < 3; ++k) xs[k] = p[component(Field::XsphX, k)].data();
+  const double delta_c0 = 2.0 * prm.density.diffusion * prm.liquid.c0;  // times h_a below
+  double sum_nb = 0.0;
 
-#pragma omp parallel for schedule(dynamic, 64) if (n >= kParallelMin)
+#pragma omp parallel for schedule(dynamic, 64) reduction(+ : sum_nb) if (n >= kParallelMin)
   for (std::size_t i = 0; i < n; ++i) {
     const double xi = p.x[0][i], yi = p.x[1][i], zi = p.x[2][i];
     const double vxi = p.v[0][i], vyi = p.v[1][i], vzi = p.v[2][i];
@@ -49,6 +59,8 @@ void standard_loop(const StageContext& c) {
     const double Ai = GradH ? P[i] / ((*omega)[i] * rho[i] * rho[i]) : P[i] / (rho[i] * rho[i]);
     double ax = 0.0, ay = 0.0, az = 0.0, du = 0.0, visc_heat = 0.0, cond = 0.0;
     double vs = cs[i];
+    double drho = 0.0, diff = 0.0;
+    int count = 1;
     for (std::uint32_t j : c.nl.of(i)) {
       if (j == i) continue;
       if (skip_walls && p.kind[j]) continue;
@@ -80,6 +92,19 @@ void standard_loop(const StageContext& c) {
         ay += k * dvy;
         az += k * dvz;
       }
+      if constexpr (Cont) {
+        if (r2 < support * support * hi * hi) ++count;
+        double ddx = dvx, ddy = dvy, ddz = dvz;  // v*_a - v*_b
+        if (xsph) {
+          const bool fluid_j = !p.kind[j];
+          ddx += xs[0][i] - (fluid_j ? xs[0][j] : 0.0);
+          ddy += xs[1][i] - (fluid_j ? xs[1][j] : 0.0);
+          ddz += xs[2][i] - (fluid_j ? xs[2][j] : 0.0);
+        }
+        const double Vj = m[j] / rho[j], dW_r = dWi * rinv;
+        drho += Vj * (ddx * dx + ddy * dy + ddz * dz) * dW_r;
+        diff += pair::density_diffusion(Vj, rho[i], rho[j], dW_r);
+      }
       if constexpr (Energy) {
         du += m[j] * w * dWi;  // times Ai below (seed 000 eq. 3.3.19)
         if constexpr (V == ViscType::Monaghan) visc_heat += 0.5 * m[j] * Pi * w * dWm;  // dissipation -> heat
@@ -100,21 +125,31 @@ void standard_loop(const StageContext& c) {
     p.a[2][i] = az;
     vsig[i] = vs;
     if constexpr (Energy) (*dudt)[i] = Ai * du + visc_heat + cond;
+    if constexpr (Cont) {
+      rate[i] = rho[i] * drho + delta_c0 * hi * diff;
+      nneigh[i] = count;
+      sum_nb += count;
+    }
+  }
+  if constexpr (Cont) {
+    c.stats.density = DensityStats{};
+    c.stats.density.mean_neighbours = n ? sum_nb / n : 0.0;
   }
 }
 
 template <bool GradH, ViscType V>
-void dispatch_energy(const StageContext& c, bool energy) {
-  if (energy) standard_loop<GradH, V, true>(c);
-  else standard_loop<GradH, V, false>(c);
+void dispatch_energy(StageContext& c, bool energy, bool cont) {
+  if (energy) standard_loop<GradH, V, true, false>(c);
+  else if (cont && !GradH) standard_loop<GradH, V, false, true>(c);
+  else standard_loop<GradH, V, false, false>(c);
 }
 
 template <bool GradH>
-void dispatch_visc(const StageContext& c, ViscType v, bool energy) {
+void dispatch_visc(StageContext& c, ViscType v, bool energy, bool cont) {
   switch (v) {
-    case ViscType::None: dispatch_energy<GradH, ViscType::None>(c, energy); break;
-    case ViscType::Monaghan: dispatch_energy<GradH, ViscType::Monaghan>(c, energy); break;
-    case ViscType::Laplacian: dispatch_energy<GradH, ViscType::Laplacian>(c, energy); break;
+    case ViscType::None: dispatch_energy<GradH, ViscType::None>(c, energy, cont); break;
+    case ViscType::Monaghan: dispatch_energy<GradH, ViscType::Monaghan>(c, energy, cont); break;
+    case ViscType::Laplacian: dispatch_energy<GradH, ViscType::Laplacian>(c, energy, cont); break;
   }
 }
 
@@ -122,7 +157,7 @@ class ForcesStandard final : public Stage {
  public:
   explicit ForcesStandard(const Physics& ph)
       : grad_h_(ph.density == DensityMode::Summation || ph.density == DensityMode::Volume),
-        energy_(ph.energy == Toggle::On) {}
+        energy_(ph.energy == Toggle::On), cont_(fuses_continuity(ph)) {}
   std::string_view name() const override { return "forces: standard"; }
   FieldSet needs() const override {
     FieldSet f;
@@ -130,17 +165,22 @@ class ForcesStandard final : public Stage {
     if (grad_h_) f.add(Field::Omega);
     return f;
   }
-  FieldSet writes() const override { return FieldSet{}.add(Field::SignalSpeed); }
+  FieldSet writes() const override {
+    FieldSet f;
+    f.add(Field::SignalSpeed);
+    if (cont_) f.add(Field::DensityRate).add(Field::Neighbours);
+    return f;
+  }
   bool sets_acceleration() const override { return true; }
   bool run(StageContext& c) override {
-    if (grad_h_) dispatch_visc<true>(c, c.prm.physics.viscosity, energy_);
-    else dispatch_visc<false>(c, c.prm.physics.viscosity, energy_);
+    if (grad_h_) dispatch_visc<true>(c, c.prm.physics.viscosity, energy_, cont_);
+    else dispatch_visc<false>(c, c.prm.physics.viscosity, energy_, cont_);
     return true;
   }
   double dt_limit(const StageContext& c) const override { return courant_limit(c.p); }
 
  private:
-  bool grad_h_, energy_;
+  bool grad_h_, energy_, cont_;
 };
 
 }  // namespace

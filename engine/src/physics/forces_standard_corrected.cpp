@@ -16,91 +16,169 @@
 namespace sph {
 namespace {
 
+/// Cont: also the continuity rate drho_a/dt = rho_a sum_b V_b (v*_a - v*_b) . G_a(b) (seed 001 eq. 54;
+/// density_continuity.cpp), in the same pass.
+template <int D, ViscType V, bool Cont, bool Xsph>
+void standard_corrected_loop(StageContext& c, std::vector<double>& pr2, std::vector<double>& vol) {
+  const Kernel& K = c.kernel;
+  const Params& prm = c.prm;
+  Particles& p = c.p;
+  const std::size_t n = p.fluid();
+  const double* m = p[Field::Mass].data();
+  const double* rho = p[Field::Density].data();
+  const double* h = p[Field::H].data();
+  const double* P = p[Field::Pressure].data();
+  const double* cs = p[Field::SoundSpeed].data();
+  double* vsig = p[Field::SignalSpeed].data();
+  const double* x[D];
+  const double* v[D];
+  for (int k = 0; k < D; ++k) { x[k] = p.x[k].data(); v[k] = p.v[k].data(); }
+  const std::uint8_t* kind = p.kind.data();
+  const CorrectionFields corr(p);
+  // per-particle factors, once per evaluation: P/rho^2 and V = m/rho (ghosts included)
+  const std::size_t total = p.total();
+  pr2.resize(total);
+  vol.resize(total);
+  for (std::size_t j = 0; j < total; ++j) {
+    pr2[j] = P[j] / (rho[j] * rho[j]);
+    vol[j] = m[j] / rho[j];
+  }
+  double* rate = Cont ? p[Field::DensityRate].data() : nullptr;
+  double* nneigh = Cont ? p[Field::Neighbours].data() : nullptr;
+  const double* dvx[D] = {};
+  if constexpr (Xsph)
+    for (int k = 0; k < D; ++k) dvx[k] = p[component(Field::XsphX, k)].data();
+  double sum_nb = 0.0;
+  const double delta_c0 = 2.0 * prm.density.diffusion * prm.liquid.c0;  // times h_a below
+  const bool skip_walls = !c.walls_in_sums();
+  const double alpha = prm.visc.alpha, beta = prm.visc.beta, eps = prm.visc.eps, nu = prm.visc.nu;
+  const double alpha_scale = V == ViscType::Monaghan ? std::max(1.0, alpha) : 1.0;
+  const double beta_scale = V == ViscType::Monaghan ? std::max(1.0, 0.5 * beta) : 1.0;
+  const double support = K.support();
+#pragma omp parallel for schedule(dynamic, 64) reduction(+ : sum_nb) if (n >= kParallelMin)
+  for (std::size_t i = 0; i < n; ++i) {
+    const double hi = h[i], Ri2 = support * support * hi * hi;
+    const Kernel::Scale si = K.scale(hi);
+    const double Ai = pr2[i];
+    double acc[D] = {};
+    double vs = cs[i], drho = 0.0, diff = 0.0;
+    int count = 1;
+    for (std::uint32_t j : c.nl.of(i)) {
+      if (j == i) continue;
+      if (skip_walls && kind[j]) continue;
+      double r[D], mr[D], dv[D];
+      double r2 = 0.0, vdotr = 0.0;
+      for (int k = 0; k < D; ++k) {
+        r[k] = x[k][i] - x[k][j];
+        mr[k] = -r[k];
+        dv[k] = v[k][i] - v[k][j];
+        r2 += r[k] * r[k];
+        vdotr += dv[k] * r[k];
+      }
+      const double hj = h[j];
+      const double R = support * std::max(hi, hj);
+      if (r2 >= R * R || r2 == 0.0) continue;
+      const double rr = std::sqrt(r2), rinv = 1.0 / rr;
+      double Wi, dWi, Wj, dWj;
+      K.eval(si, rr, Wi, dWi);
+      if (hj == hi) { Wj = Wi; dWj = dWi; }  // fixed h: the same kernel values
+      else K.eval(K.scale(hj), rr, Wj, dWj);
+      double Gi[D], Gj[D];
+      corr.gradient_d<D>(i, r, Wi, dWi * rinv, Gi);
+      corr.gradient_d<D>(j, mr, Wj, dWj * rinv, Gj);
+      const double Aj = pr2[j];
+      if constexpr (Cont) {
+        if (r2 < Ri2) ++count;
+        double dot = 0.0;
+        for (int k = 0; k < D; ++k) {
+          double d = dv[k];
+          if constexpr (Xsph) d += dvx[k][i] - (kind[j] ? 0.0 : dvx[k][j]);
+          dot += d * Gi[k];
+        }
+        drho += vol[j] * dot;
+        diff += pair::density_diffusion(vol[j], rho[i], rho[j], dWi * rinv);
+      }
+      vs = std::max(vs, pair::signal_speed(cs[i], cs[j], vdotr * rinv, alpha_scale, beta_scale));
+      double Pi = 0.0;
+      if constexpr (V == ViscType::Monaghan)
+        Pi = pair::monaghan_pi(vdotr, r2, hi, hj, rho[i], rho[j], cs[i], cs[j], alpha, beta, eps);
+      double rdG = 0.0;
+      for (int k = 0; k < D; ++k) {
+        const double Gm = 0.5 * (Gi[k] - Gj[k]);
+        acc[k] -= m[j] * (Ai * Gi[k] - Aj * Gj[k] + Pi * Gm);
+        rdG += r[k] * Gm;
+      }
+      if constexpr (V == ViscType::Laplacian) {
+        const double f = pair::laplacian_factor(m[j], nu, rho[i], rho[j], rdG, r2, 0.5 * (hi + hj), eps);
+        for (int k = 0; k < D; ++k) acc[k] += f * dv[k];
+      }
+    }
+    for (int k = 0; k < D; ++k) p.a[k][i] = acc[k];
+    for (int k = D; k < 3; ++k) p.a[k][i] = 0.0;
+    vsig[i] = vs;
+    if constexpr (Cont) {
+      rate[i] = rho[i] * drho + delta_c0 * hi * diff;
+      nneigh[i] = count;
+      sum_nb += count;
+    }
+  }
+  if constexpr (Cont) {
+    c.stats.density = DensityStats{};
+    c.stats.density.mean_neighbours = n ? sum_nb / n : 0.0;
+  }
+}
+
+template <int D, bool Cont, bool Xsph>
+void dispatch_visc(StageContext& c, std::vector<double>& pr2, std::vector<double>& vol) {
+  switch (c.prm.physics.viscosity) {
+    case ViscType::None: standard_corrected_loop<D, ViscType::None, Cont, Xsph>(c, pr2, vol); break;
+    case ViscType::Monaghan: standard_corrected_loop<D, ViscType::Monaghan, Cont, Xsph>(c, pr2, vol); break;
+    case ViscType::Laplacian: standard_corrected_loop<D, ViscType::Laplacian, Cont, Xsph>(c, pr2, vol); break;
+  }
+}
+
+template <int D>
+void dispatch(StageContext& c, bool cont, bool xsph, std::vector<double>& pr2, std::vector<double>& vol) {
+  if (!cont) dispatch_visc<D, false, false>(c, pr2, vol);
+  else if (xsph) dispatch_visc<D, true, true>(c, pr2, vol);
+  else dispatch_visc<D, true, false>(c, pr2, vol);
+}
+
 class ForcesStandardCorrected final : public Stage {
  public:
-  explicit ForcesStandardCorrected(int dim) : dim_(dim) {}
+  ForcesStandardCorrected(const Physics& ph, int dim)
+      : dim_(dim), cont_(fuses_continuity(ph)), xsph_(ph.xsph == Toggle::On) {}
   std::string_view name() const override { return "forces: standard-corrected"; }
   FieldSet needs() const override {
     return FieldSet{}.add(Field::Mass).add(Field::Density).add(Field::H).add(Field::Pressure).add(Field::SoundSpeed);
   }
-  FieldSet writes() const override { return FieldSet{}.add(Field::SignalSpeed); }
+  FieldSet writes() const override {
+    FieldSet f;
+    f.add(Field::SignalSpeed);
+    if (cont_) f.add(Field::DensityRate).add(Field::Neighbours);
+    return f;
+  }
   bool sets_acceleration() const override { return true; }
-
   bool run(StageContext& c) override {
-    const Kernel& K = c.kernel;
-    const Params& prm = c.prm;
-    Particles& p = c.p;
-    const std::size_t n = p.fluid();
-    const auto& m = p[Field::Mass];
-    const auto& rho = p[Field::Density];
-    const auto& h = p[Field::H];
-    const auto& P = p[Field::Pressure];
-    const auto& cs = p[Field::SoundSpeed];
-    auto& vsig = p[Field::SignalSpeed];
-    const CorrectionFields corr(p);
-    const ViscType visc = prm.physics.viscosity;
-    const bool skip_walls = !c.walls_in_sums();
-    const double alpha = prm.visc.alpha, beta = prm.visc.beta, eps = prm.visc.eps, nu = prm.visc.nu;
-    const double alpha_scale = visc == ViscType::Monaghan ? std::max(1.0, alpha) : 1.0;
-    const double beta_scale = visc == ViscType::Monaghan ? std::max(1.0, 0.5 * beta) : 1.0;
-    const double support = K.support();
-    const int d = dim_;
-#pragma omp parallel for schedule(dynamic, 64) if (n >= kParallelMin)
-    for (std::size_t i = 0; i < n; ++i) {
-      const double hi = h[i];
-      const double Ai = P[i] / (rho[i] * rho[i]);
-      double acc[3] = {0.0, 0.0, 0.0};
-      double vs = cs[i];
-      for (std::uint32_t j : c.nl.of(i)) {
-        if (j == i) continue;
-        if (skip_walls && p.kind[j]) continue;
-        double r[3], mr[3], dv[3];
-        for (int k = 0; k < 3; ++k) {
-          r[k] = p.x[k][i] - p.x[k][j];
-          mr[k] = -r[k];
-          dv[k] = p.v[k][i] - p.v[k][j];
-        }
-        const double r2 = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
-        const double hj = h[j];
-        const double R = support * std::max(hi, hj);
-        if (r2 >= R * R || r2 == 0.0) continue;
-        const double rr = std::sqrt(r2), rinv = 1.0 / rr;
-        double Gi[3], Gj[3];
-        corr.gradient(i, r, K.W(rr, hi), K.dWdr(rr, hi), rinv, Gi);
-        corr.gradient(j, mr, K.W(rr, hj), K.dWdr(rr, hj), rinv, Gj);
-        const double Aj = P[j] / (rho[j] * rho[j]);
-        const double vdotr = dv[0] * r[0] + dv[1] * r[1] + dv[2] * r[2];
-        vs = std::max(vs, pair::signal_speed(cs[i], cs[j], vdotr * rinv, alpha_scale, beta_scale));
-        const double Pi = visc == ViscType::Monaghan
-                              ? pair::monaghan_pi(vdotr, r2, hi, hj, rho[i], rho[j], cs[i], cs[j], alpha, beta, eps)
-                              : 0.0;
-        double rdG = 0.0;
-        for (int k = 0; k < d; ++k) {
-          const double Gm = 0.5 * (Gi[k] - Gj[k]);
-          acc[k] -= m[j] * (Ai * Gi[k] - Aj * Gj[k] + Pi * Gm);
-          rdG += r[k] * Gm;
-        }
-        if (visc == ViscType::Laplacian) {
-          const double f = pair::laplacian_factor(m[j], nu, rho[i], rho[j], rdG, r2, 0.5 * (hi + hj), eps);
-          for (int k = 0; k < d; ++k) acc[k] += f * dv[k];
-        }
-      }
-      for (int k = 0; k < 3; ++k) p.a[k][i] = acc[k];
-      vsig[i] = vs;
+    switch (dim_) {
+      case 1: dispatch<1>(c, cont_, xsph_, pr2_, vol_); break;
+      case 2: dispatch<2>(c, cont_, xsph_, pr2_, vol_); break;
+      default: dispatch<3>(c, cont_, xsph_, pr2_, vol_); break;
     }
     return true;
   }
-
   double dt_limit(const StageContext& c) const override { return courant_limit(c.p); }
 
  private:
   int dim_;
+  bool cont_, xsph_;
+  std::vector<double> pr2_, vol_;  ///< per-particle P/rho^2 and m/rho, reused between evaluations
 };
 
 }  // namespace
 
-std::unique_ptr<Stage> make_forces_standard_corrected(const Physics&, int dim) {
-  return std::make_unique<ForcesStandardCorrected>(dim);
+std::unique_ptr<Stage> make_forces_standard_corrected(const Physics& ph, int dim) {
+  return std::make_unique<ForcesStandardCorrected>(ph, dim);
 }
 
 }  // namespace sph

@@ -1,6 +1,6 @@
 // The kernel-gradient correction stage (seed 001 eqs. 33-36, Bonet & Lok 1999): per particle, the
 // Shepard sum S, its gradient, and the d x d matrix L that makes the corrected gradient exact for linear
-// fields, solved with small Eigen matrices. Guard: near a free surface or with few neighbours the
+// fields, solved with small Eigen matrices; stored as A = L/S and c = L grad S / S^2 (corrected_kernel.h). Guard: near a free surface or with few neighbours the
 // moment matrix M = sum_b V_b grad K0*_a(b) (x_b - x_a)^T becomes ill-conditioned; when its reciprocal
 // condition number d / (|M|_F |M^-1|_F) (1 for a multiple of the identity, ~2 s_min/s_max when poorly
 // conditioned) falls below correction.min_rcond, or M is singular, L = I is used instead (the order-0
@@ -15,55 +15,63 @@ namespace sph {
 namespace {
 
 template <int D>
-std::size_t correct(StageContext& c) {
+std::size_t correct(StageContext& c, std::vector<double>& vol) {
   using Mat = Eigen::Matrix<double, D, D>;
-  using Vec = Eigen::Matrix<double, D, 1>;
   const Kernel& K = c.kernel;
   Particles& p = c.p;
   const bool walls_in = c.walls_in_sums();
   const std::size_t n = walls_in ? p.size() : p.fluid();  // dummy walls need their own correction
-  const auto& m = p[Field::Mass];
-  const auto& rho = p[Field::Density];
-  const auto& h = p[Field::H];
-  auto& S = p[Field::Shepard];
-  auto& fallback = p[Field::CorrFallback];
-  std::vector<double>* dS[D];
-  std::vector<double>* L[D][D];
+  const double* m = p[Field::Mass].data();
+  const double* rho = p[Field::Density].data();
+  const double* h = p[Field::H].data();
+  const std::uint8_t* kind = p.kind.data();
+  const double* x[D];
+  for (int k = 0; k < D; ++k) x[k] = p.x[k].data();
+  double* S = p[Field::Shepard].data();
+  double* fallback = p[Field::CorrFallback].data();
+  double* C[D];
+  double* A[D][D];
   for (int k = 0; k < D; ++k) {
-    dS[k] = &p[component(Field::ShepardGradX, k)];
-    for (int l = 0; l < D; ++l) L[k][l] = &p[component(Field::CorrXX, k, l)];
+    C[k] = p[component(Field::CorrCX, k)].data();
+    for (int l = 0; l < D; ++l) A[k][l] = p[component(Field::CorrXX, k, l)].data();
   }
   const double support = K.support();
   const double min_rcond = c.prm.correction.min_rcond;
   std::size_t fallbacks = 0;
+  vol.resize(p.total());  // V = m / rho of every particle, ghosts included: one division each
+  for (std::size_t j = 0; j < vol.size(); ++j) vol[j] = m[j] / rho[j];
 #pragma omp parallel for schedule(dynamic, 64) reduction(+ : fallbacks) if (n >= kParallelMin)
   for (std::size_t i = 0; i < n; ++i) {
     const double hi = h[i], R2 = support * support * hi * hi;
-    // pass 1: S and grad S
-    double s = 0.0;
-    Vec ds = Vec::Zero();
+    const Kernel::Scale si = K.scale(hi);
+    // One pass. With r = x_i - x_j, grad W = r dW/(r dr), grad K0* = (grad W - W grad S / S) / S, so
+    //   M = sum V grad K0* (x_j - x_i)^T = -T1 / S + grad S T2^T / S^2,
+    //   T1 = sum V (dW/(r dr)) r r^T,  T2 = sum V W r,  grad S = sum V (dW/(r dr)) r,  S = sum V W.
+    double s = 0.0, ds[D] = {}, t2[D] = {}, t1[D][D] = {};
     for (std::uint32_t j : c.nl.of(i)) {
-      if (!walls_in && p.kind[j]) continue;
-      Vec r;
-      for (int k = 0; k < D; ++k) r[k] = p.x[k][i] - p.x[k][j];
-      const double r2 = r.squaredNorm();
+      if (!walls_in && kind[j]) continue;
+      double r[D], r2 = 0.0;
+      for (int k = 0; k < D; ++k) {
+        r[k] = x[k][i] - x[k][j];
+        r2 += r[k] * r[k];
+      }
       if (r2 >= R2) continue;
-      const double rr = std::sqrt(r2), V = m[j] / rho[j];
-      s += V * K.W(rr, hi);
-      if (rr > 0.0) ds += V * K.dWdr(rr, hi) / rr * r;
+      const double rr = std::sqrt(r2);
+      double W, dWdr;
+      K.eval(si, rr, W, dWdr);
+      const double V = vol[j];
+      const double VW = V * W, VdW = rr > 0.0 ? V * dWdr / rr : 0.0;
+      s += VW;
+      for (int k = 0; k < D; ++k) {
+        ds[k] += VdW * r[k];
+        t2[k] += VW * r[k];
+        for (int l = 0; l < D; ++l) t1[k][l] += VdW * r[k] * r[l];
+      }
     }
-    // pass 2: M = sum V grad K0* (x_j - x_i)^T
-    Mat M = Mat::Zero();
-    for (std::uint32_t j : c.nl.of(i)) {
-      if (!walls_in && p.kind[j]) continue;
-      Vec r;
-      for (int k = 0; k < D; ++k) r[k] = p.x[k][i] - p.x[k][j];
-      const double r2 = r.squaredNorm();
-      if (r2 >= R2 || r2 == 0.0) continue;
-      const double rr = std::sqrt(r2), V = m[j] / rho[j];
-      const Vec g0 = (K.dWdr(rr, hi) / rr * r - K.W(rr, hi) * ds / s) / s;
-      M -= V * g0 * r.transpose();  // (x_j - x_i) = -r
-    }
+    const double sinv = 1.0 / s;
+    Mat M;
+    for (int k = 0; k < D; ++k)
+      for (int l = 0; l < D; ++l) M(k, l) = (-t1[k][l] + ds[k] * t2[l] * sinv) * sinv;
     Mat Li = Mat::Identity();
     bool fell_back = true;
     const double det = M.determinant();
@@ -79,8 +87,12 @@ std::size_t correct(StageContext& c) {
     S[i] = s;
     fallback[i] = fell_back ? 1.0 : 0.0;
     for (int k = 0; k < D; ++k) {
-      (*dS[k])[i] = ds[k];
-      for (int l = 0; l < D; ++l) (*L[k][l])[i] = Li(k, l);
+      double ck = 0.0;
+      for (int l = 0; l < D; ++l) {
+        ck += Li(k, l) * ds[l];
+        A[k][l][i] = Li(k, l) * sinv;
+      }
+      C[k][i] = ck * sinv * sinv;
     }
   }
   return fallbacks;
@@ -96,22 +108,23 @@ class GradientCorrection final : public Stage {
     FieldSet f;
     f.add(Field::Shepard);
     for (int k = 0; k < dim_; ++k) {
-      f.add(component(Field::ShepardGradX, k));
+      f.add(component(Field::CorrCX, k));
       for (int l = 0; l < dim_; ++l) f.add(component(Field::CorrXX, k, l));
     }
     return f;
   }
   bool run(StageContext& c) override {
     switch (dim_) {
-      case 1: c.stats.correction_fallbacks = correct<1>(c); break;
-      case 2: c.stats.correction_fallbacks = correct<2>(c); break;
-      default: c.stats.correction_fallbacks = correct<3>(c); break;
+      case 1: c.stats.correction_fallbacks = correct<1>(c, vol_); break;
+      case 2: c.stats.correction_fallbacks = correct<2>(c, vol_); break;
+      default: c.stats.correction_fallbacks = correct<3>(c, vol_); break;
     }
     return true;
   }
 
  private:
   int dim_;
+  std::vector<double> vol_;  ///< per-particle m / rho, reused between evaluations
 };
 
 }  // namespace

@@ -32,4 +32,10 @@ inline double laplacian_factor(double mj, double nu, double rhoi, double rhoj, d
   return mj * nu * (rhoi + rhoj) / (rhoi * rhoj) * rdW / (r2 + eps * hm * hm);
 }
 
+/// Density diffusion of the continuity equation (Molteni & Colagrossi 2009, Comput. Phys. Commun. 180,
+/// 861; the "delta-SPH" term): drho_a/dt += 2 delta h_a c0 sum_b V_b (rho_a - rho_b) (dW/dr)/r. It smooths
+/// the density, hence the pressure, the way a Laplacian of rho would; summed per pair without 2 delta h c0.
+/// dW_r = dW/dr(r, h_a) / r [1/length^(d+2)].
+inline double density_diffusion(double Vj, double rhoi, double rhoj, double dW_r) { return Vj * (rhoi - rhoj) * dW_r; }
+
 }  // namespace sph::pair

@@ -39,6 +39,7 @@ class VelocityGradient final : public Stage {
 #pragma omp parallel for schedule(dynamic, 64) if (n >= kParallelMin)
     for (std::size_t i = 0; i < n; ++i) {
       const double hi = h[i], R2 = support * support * hi * hi;
+      const Kernel::Scale si = K.scale(hi);
       double g[9] = {};
       for (std::uint32_t j : c.nl.of(i)) {
         if (j == i || (!walls_in && p.kind[j])) continue;
@@ -47,8 +48,9 @@ class VelocityGradient final : public Stage {
         const double r2 = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
         if (r2 >= R2 || r2 == 0.0) continue;
         const double rr = std::sqrt(r2);
-        double G[3];
-        corr.gradient(i, r, K.W(rr, hi), K.dWdr(rr, hi), 1.0 / rr, G);
+        double G[3], W, dW;
+        K.eval(si, rr, W, dW);
+        corr.gradient(i, r, W, dW / rr, G);
         const double V = m[j] / rho[j];
         for (int k = 0; k < d; ++k)
           for (int l = 0; l < d; ++l) g[3 * k + l] += V * (p.v[k][j] - p.v[k][i]) * G[l];

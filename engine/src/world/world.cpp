@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "core/parallel.h"
 #include "core/pipeline.h"
@@ -12,7 +13,17 @@
 namespace sph {
 namespace {
 
-constexpr double kSkin = 1.2;  ///< neighbour lists reach 1.2 x the current h, so h may grow 20% in a solve
+/// How far beyond the current h the neighbour lists reach: the Newton-Raphson solve may grow h by 20%
+/// before the list is rebuilt; an evolved h changes by far less than 5% in a step; a fixed h needs no
+/// margin (lists are rebuilt at every evaluation, for the positions of that evaluation).
+double skin(HMode mode) {
+  switch (mode) {
+    case HMode::Variable: return 1.2;
+    case HMode::Evolved: return 1.05;
+    case HMode::Fixed: return 1.0;
+  }
+  return 1.2;
+}
 
 }  // namespace
 
@@ -96,22 +107,28 @@ void World::set_params(const Params& p) {
   rates_known_ = false;
 }
 
+void World::prepare_neighbours() {
+  const std::size_t n = p_.size();
+  auto& h = p_[Field::H];
+  double hmax = 0.0;
+#pragma omp parallel for reduction(max : hmax) if (n >= kParallelMin)
+  for (std::size_t i = 0; i < n; ++i) hmax = std::max(hmax, h[i]);
+  const double reach = skin(cfg_.params.physics.smoothing);
+  make_ghosts(domain_, kernel_.support() * reach * hmax, p_);
+  copy_ghost_velocity(p_);
+  copy_ghost_fields(p_, start_shared_);
+  build_neighbours(p_, h, kernel_.support() * reach, nl_);
+  h_limit_.resize(n);
+#pragma omp parallel for if (n >= kParallelMin)
+  for (std::size_t i = 0; i < n; ++i) h_limit_[i] = reach * h[i];
+}
+
 void World::evaluate() {
   apply_boundaries(domain_, p_);
   const std::size_t n = p_.size();
-  auto& h = p_[Field::H];
   StageContext ctx = context();
   for (int attempt = 0;; ++attempt) {
-    double hmax = 0.0;
-#pragma omp parallel for reduction(max : hmax) if (n >= kParallelMin)
-    for (std::size_t i = 0; i < n; ++i) hmax = std::max(hmax, h[i]);
-    make_ghosts(domain_, kernel_.support() * kSkin * hmax, p_);
-    copy_ghost_velocity(p_);
-    copy_ghost_fields(p_, start_shared_);
-    build_neighbours(p_, h, kernel_.support() * kSkin, nl_);
-    h_limit_.resize(n);
-#pragma omp parallel for if (n >= kParallelMin)
-    for (std::size_t i = 0; i < n; ++i) h_limit_[i] = kSkin * h[i];
+    prepare_neighbours();
     if (!pipeline_->sets_acceleration())
       for (int k = 0; k < 3; ++k) std::fill(p_.a[k].begin(), p_.a[k].begin() + static_cast<std::ptrdiff_t>(n), 0.0);
     bool complete = true;
@@ -162,15 +179,42 @@ PhaseSpace World::phase_space() {
 }
 
 void World::step(double dt_max) {
-  double dt = std::min(next_dt(), dt_max);
+  const double dt_free = next_dt();
+  double dt = std::min(dt_free, dt_max);
   if (!(dt > 0.0) || !std::isfinite(dt)) throw DivergedError(-1, step_, t_, "no finite timestep");
+  // A blow-up that stays finite (velocities of 1e10, E_kin of 1e21) shows as a collapsing adaptive dt:
+  // the run would crawl forever. A millionth of the first step's dt is far below any physical change.
+  if (cfg_.params.time.dt <= 0.0) {
+    if (dt_first_ <= 0.0) dt_first_ = dt_free;
+    if (dt_free < 1e-6 * dt_first_) {
+      char what[160];
+      std::snprintf(what, sizeof what, "the timestep collapsed to %.3g (the first step took %.3g): the run is unstable",
+                    dt_free, dt_first_);
+      throw DivergedError(-1, step_, t_, what);
+    }
+  }
   PhaseSpace s = phase_space();
   current_ = integrator_->step(s, [this] { evaluate(); }, dt, current_);
   apply_boundaries(domain_, p_);
   t_ += dt;
   dt_last_ = dt;
   ++step_;
+  after_step();
   check_finite();
+}
+
+void World::after_step() {
+  bool due = false;
+  for (const auto& s : pipeline_->stages()) due = due || s->acts_after(cfg_.params, step_);
+  if (!due) return;
+  prepare_neighbours();  // for the state the step ended in
+  StageContext ctx = context();
+  for (const auto& s : pipeline_->stages())
+    if (s->acts_after(cfg_.params, step_)) {
+      s->after_step(ctx);
+      copy_ghost_fields(p_, s->shares());
+    }
+  current_ = false;  // the state changed: the next step evaluates first
 }
 
 void World::advance_to(double t_target) {
