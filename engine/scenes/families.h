@@ -11,5 +11,8 @@ SceneSpec box_perturbed_scene();
 SceneSpec box_random_scene();
 SceneSpec tube2d_scene();
 SceneSpec elliptical_drop_scene();
+SceneSpec dam_break_scene();
+SceneSpec dam_break_slope_scene();
+SceneSpec hydrostatic_tank_scene();
 
 }  // namespace sph::scenes

@@ -7,7 +7,8 @@ const std::vector<SceneSpec>& scene_registry() {
   static const std::vector<SceneSpec> table = {
       scenes::sod_scene(),         scenes::castellanos_scene(), scenes::box_lattice_scene(),
       scenes::box_perturbed_scene(), scenes::box_random_scene(), scenes::tube2d_scene(),
-      scenes::elliptical_drop_scene(),
+      scenes::elliptical_drop_scene(), scenes::dam_break_scene(), scenes::dam_break_slope_scene(),
+      scenes::hydrostatic_tank_scene(),
   };
   return table;
 }

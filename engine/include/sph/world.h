@@ -87,6 +87,8 @@ class World {
   /// Stage actions due after a completed step (e.g. density re-initialisation).
   void after_step();
   void check_finite() const;
+  /// Throws DivergedError when E_tot has grown far beyond its initial scale (a finite blow-up).
+  void check_energy();
   PhaseSpace phase_space();
 
   RunConfig cfg_;
@@ -104,6 +106,7 @@ class World {
   std::vector<double> h_limit_;
   double t_ = 0.0, dt_last_ = 0.0;
   double dt_first_ = 0.0;     ///< the first adaptive dt (a collapse far below it is a blow-up)
+  double energy_scale_ = -1.0, energy0_ = 0.0;  ///< |E_kin| + |E_int| + |E_pot| and E_tot after step 1
   std::int64_t step_ = 0, evaluations_ = 0;
   bool current_ = false;      ///< rates belong to the current state
   bool rates_known_ = false;  ///< signal speeds from some evaluation under the current params (for dt)

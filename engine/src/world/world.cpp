@@ -201,6 +201,27 @@ void World::step(double dt_max) {
   ++step_;
   after_step();
   check_finite();
+  check_energy();
+}
+
+void World::check_energy() {
+  // Every stage conserves or dissipates E_kin + E_int + E_pot (the corrected forms to truncation error),
+  // so a total energy that grows by many times its initial scale is a blow-up that has not (yet) reached
+  // inf or NaN. Checked every 16 steps (the potentials cost a pass over the neighbours).
+  if (step_ % 16 != 0 && step_ > 1) return;
+  const Diagnostics d = diagnostics();
+  if (energy_scale_ < 0.0) {
+    energy_scale_ = std::abs(d.E_kin) + std::abs(d.E_int) + std::abs(d.E_pot);
+    energy0_ = d.E_tot;
+    return;
+  }
+  if (energy_scale_ > 0.0 && d.E_tot - energy0_ > 10.0 * energy_scale_) {
+    char what[200];
+    std::snprintf(what, sizeof what,
+                  "the total energy grew from %.4g to %.4g (E_kin = %.3g, v_max = %.3g): the run is unstable", energy0_,
+                  d.E_tot, d.E_kin, d.v_max);
+    throw DivergedError(-1, step_, t_, what);
+  }
 }
 
 void World::after_step() {

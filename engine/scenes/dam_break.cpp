@@ -1,0 +1,120 @@
+// Dam breaks (seed 001 §7.2): a water column released in a tank under gravity, Tait EOS with
+// c0 = 10 sqrt(2 g H) (weakly compressible: Mach ~ 0.1), continuity density with delta-SPH diffusion,
+// Lennard-Jones (seed 001 eq. 60, D = 5 g H, p1 = 4, p2 = 2, r0 = dx) or dummy wall particles.
+//  - dam_break: the classic column of width a and height 2a in a tank of length 4a (Martin & Moyce 1952;
+//    Koshizuka & Oka 1996), against the measured surge fronts;
+//  - dam_break_slope: seed 001's column released towards a downstream slope, with its fixed
+//    dt = 0.15 ms; the water runs up, sloshes and comes to rest. The seed gives no dimensions; here a
+//    0.3 m wide, 0.6 m high column, a flat floor 0.6 m long, then a 30 degree slope.
+#include <cmath>
+#include <numbers>
+
+#include "families.h"
+#include "liquid_tank.h"
+#include "reference/dam_break_reference.h"
+#include "scene_util.h"
+
+namespace sph::scenes {
+namespace {
+
+constexpr double kG = 9.81;
+
+/// Physics and parameters shared by the dam breaks; c0 from the column height H.
+Params liquid_defaults(double H) {
+  Params d;
+  d.physics.density = DensityMode::Continuity;
+  d.physics.smoothing = HMode::Fixed;
+  d.physics.eos = EosType::Tait;
+  d.physics.force = ForceType::StandardCorrected;
+  d.physics.viscosity = ViscType::Monaghan;
+  d.physics.xsph = Toggle::Off;
+  d.physics.energy = Toggle::Off;
+  d.physics.body_force = BodyForce::Uniform;
+  d.physics.walls = WallType::Dummy;
+  d.liquid.rho0 = 1000.0;
+  d.liquid.gamma = 7.0;
+  d.liquid.c0 = 10.0 * std::sqrt(2.0 * kG * H);
+  d.density.diffusion = 0.1;
+  d.visc.alpha = 0.1;  // seed 001: alpha ~ 0.01-0.1, beta = 0
+  d.visc.beta = 0.0;
+  d.body.gx = 0.0;
+  d.body.gy = -kG;
+  d.walls.p1 = 4.0;
+  d.walls.p2 = 2.0;
+  d.kernel.type = KernelType::M4;
+  d.kernel.eta = 1.3;
+  d.time.integrator = IntegratorType::PredictorCorrector;
+  d.time.cfl = 0.3;
+  return d;
+}
+
+}  // namespace
+
+SceneSpec dam_break_scene() {
+  SceneSpec s;
+  s.name = "dam_break";
+  s.category = "free-surface liquids (seed 001)";
+  s.description = "water column a x 2a collapses in a 4a tank; surge front vs Martin & Moyce 1952, Koshizuka & Oka 1996";
+  s.dim = 2;
+  s.params = {{"a", 1.0, 0.01, 100.0, false, "column width a [m] (height 2a, tank length 4a)"},
+              {"dx", 0.025, 1e-4, 1.0, false, "particle spacing [m]"}};
+  s.defaults = liquid_defaults(2.0 * s.params[0].value);
+  s.defaults.time.t_end = 0.7;  // T = t sqrt(2g/a) = 3.1 for a = 1 m
+  s.defaults.time.dt_out = 0.05;
+  s.allow(Slot::Eos, {"tait"});
+  s.allow(Slot::Walls, {"dummy", "lennard_jones"});
+  s.build = [](const Params& prm, const SceneValues& v) {
+    const double a = v.at("a"), dx = v.at("dx"), L = 4.0 * a, H = 2.0 * a;
+    LiquidLayout lay;
+    add_fluid_block(lay, 0.0, a, 0.0, H, dx);
+    add_tank_walls(lay, L, 1.25 * H, dx, prm.physics.walls, dummy_layers(prm, 2));
+    SceneSetup out{make_liquid(prm, lay, dx, H, -prm.body.gy), {}, dx, lj_strength(kG, H)};
+    out.domain.lo = {-0.1 * a, -0.1 * a, 0.0};
+    out.domain.hi = {L + 0.1 * a, 1.25 * H, 1.0};
+    return out;
+  };
+  s.reference = [](const Params& prm, const SceneValues& v) {
+    return make_dam_break_reference(v.at("a"), v.at("dx"), -prm.body.gy);
+  };
+  return s;
+}
+
+SceneSpec dam_break_slope_scene() {
+  SceneSpec s;
+  s.name = "dam_break_slope";
+  s.category = "free-surface liquids (seed 001)";
+  s.description = "seed 001 §7.2: a column released towards a 30 degree slope, Lennard-Jones walls, dt = 0.15 ms; comes to rest";
+  s.dim = 2;
+  s.params = {{"width", 0.3, 0.01, 10.0, false, "column width [m]"},
+              {"height", 0.6, 0.01, 10.0, false, "column height H [m]"},
+              {"floor", 0.6, 0.0, 100.0, false, "length of the flat floor before the slope [m]"},
+              {"angle", 30.0, 5.0, 80.0, false, "slope angle [degrees]"},
+              {"dx", 0.02, 1e-4, 1.0, false, "particle spacing [m]"}};
+  s.defaults = liquid_defaults(0.6);
+  s.defaults.physics.walls = WallType::LennardJones;  // seed 001 eq. 60
+  s.defaults.time.dt = 1.5e-4;                         // seed 001 §7.2: dt = 0.15 ms
+  s.defaults.time.t_end = 5.0;                         // the seed's water is at rest by t = 4.5 s
+  s.defaults.time.dt_out = 0.1;
+  s.allow(Slot::Eos, {"tait"});
+  s.allow(Slot::Walls, {"lennard_jones"});
+  s.build = [](const Params& prm, const SceneValues& v) {
+    const double W = v.at("width"), H = v.at("height"), F = v.at("floor"), dx = v.at("dx");
+    const double th = v.at("angle") * std::numbers::pi / 180.0;
+    const double top = 1.5 * H;                                  // height of the walls
+    const double slope_len = top / std::sin(th);
+    LiquidLayout lay;
+    add_fluid_block(lay, 0.0, W, 0.0, H, dx);
+    const double o = 0.5 * dx, ds = 0.5 * dx;                    // as add_tank_walls: lines dx/2 outside
+    const Vec3 corner{F + o * std::tan(0.5 * th), -o, 0.0};      // where the floor line meets the slope line
+    add_wall_line(lay, {-o, top, 0}, {-o, -o, 0}, ds);          // left wall
+    add_wall_line(lay, {-o + ds, -o, 0}, corner, ds);            // floor
+    add_wall_line(lay, corner, corner + Vec3{std::cos(th), std::sin(th), 0} * slope_len, ds);  // slope
+    SceneSetup out{make_liquid(prm, lay, dx, H, -prm.body.gy), {}, dx, lj_strength(kG, H)};
+    out.domain.lo = {-0.1 * H, -0.1 * H, 0.0};
+    out.domain.hi = {F + top / std::tan(th) + 0.1 * H, top, 1.0};
+    return out;
+  };
+  return s;
+}
+
+}  // namespace sph::scenes

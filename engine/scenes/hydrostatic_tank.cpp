@@ -1,0 +1,62 @@
+// Water at rest in a tank under gravity: it should stay at rest with P = rho0 g (H - y). Starts from the
+// hydrostatic density (Tait EOS inverted); the settling of the small start-up waves is damped by the
+// artificial viscosity. Dummy (default) or Lennard-Jones walls.
+#include <cmath>
+
+#include "families.h"
+#include "liquid_tank.h"
+#include "reference/hydrostatic_reference.h"
+#include "scene_util.h"
+
+namespace sph::scenes {
+
+SceneSpec hydrostatic_tank_scene() {
+  SceneSpec s;
+  s.name = "hydrostatic_tank";
+  s.category = "free-surface liquids (seed 001)";
+  s.description = "water at rest in a 1 m tank under gravity; pressure against rho0 g (H - y)";
+  s.dim = 2;
+  s.params = {{"width", 1.0, 0.01, 100.0, false, "tank width [m]"},
+              {"depth", 1.0, 0.01, 100.0, false, "water depth H [m]"},
+              {"dx", 0.025, 1e-4, 1.0, false, "particle spacing [m]"}};
+  Params& d = s.defaults;
+  d.physics.density = DensityMode::Continuity;
+  d.physics.smoothing = HMode::Fixed;
+  d.physics.eos = EosType::Tait;
+  d.physics.force = ForceType::StandardCorrected;
+  d.physics.viscosity = ViscType::Monaghan;
+  d.physics.energy = Toggle::Off;
+  d.physics.body_force = BodyForce::Uniform;
+  d.physics.walls = WallType::Dummy;
+  d.liquid.rho0 = 1000.0;
+  d.liquid.gamma = 7.0;
+  d.liquid.c0 = 10.0 * std::sqrt(2.0 * 9.81 * 1.0);
+  d.density.diffusion = 0.1;
+  d.visc.alpha = 0.1;
+  d.visc.beta = 0.0;
+  d.body.gx = 0.0;
+  d.body.gy = -9.81;
+  d.kernel.type = KernelType::M4;
+  d.kernel.eta = 1.3;
+  d.time.integrator = IntegratorType::PredictorCorrector;
+  d.time.t_end = 1.0;
+  d.time.dt_out = 0.1;
+  s.allow(Slot::Eos, {"tait"});
+  s.allow(Slot::Walls, {"dummy", "lennard_jones"});
+  s.build = [](const Params& prm, const SceneValues& v) {
+    const double W = v.at("width"), H = v.at("depth"), dx = v.at("dx");
+    LiquidLayout lay;
+    add_fluid_block(lay, 0.0, W, 0.0, H, dx);
+    add_tank_walls(lay, W, 1.2 * H, dx, prm.physics.walls, dummy_layers(prm, 2));
+    SceneSetup out{make_liquid(prm, lay, dx, H, -prm.body.gy), {}, dx, 5.0 * 9.81 * H};
+    out.domain.lo = {-0.1 * W, -0.1 * H, 0.0};
+    out.domain.hi = {1.1 * W, 1.2 * H, 1.0};
+    return out;
+  };
+  s.reference = [](const Params& prm, const SceneValues& v) {
+    return make_hydrostatic_reference(v.at("depth"), v.at("width"), v.at("dx"), prm.liquid.rho0, -prm.body.gy);
+  };
+  return s;
+}
+
+}  // namespace sph::scenes

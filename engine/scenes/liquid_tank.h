@@ -1,0 +1,40 @@
+// Building blocks of the liquid scenes: lattice blocks of fluid and wall particles for tanks and slopes.
+// SI units. The inner surface of a wall is where its first layer of wall particles lies, half a
+// spacing outside the fluid lattice: fluid particle centres start dx/2 inside it.
+#pragma once
+#include <vector>
+
+#include "sph/params.h"
+#include "sph/particles.h"
+#include "sph/vec.h"
+
+namespace sph::scenes {
+
+struct LiquidLayout {
+  std::vector<Vec3> fluid;
+  std::vector<Vec3> walls;
+};
+
+/// Fluid on a square lattice of spacing dx filling [x0, x1] x [y0, y1] (centres at x0 + (i + 1/2) dx).
+void add_fluid_block(LiquidLayout& out, double x0, double x1, double y0, double y1, double dx);
+
+/// The walls of an open-topped rectangular tank whose inner faces are x = 0, x = L and y = 0, up to
+/// height H: Lennard-Jones walls are one line of particles at spacing dx/2 on the faces moved out by
+/// dx/2 (seed 001 §7.2 puts the boundary particles on the wall); dummy walls are `layers` lattice rows
+/// of spacing dx outside the faces, corners filled.
+void add_tank_walls(LiquidLayout& out, double L, double H, double dx, WallType type, int layers);
+
+/// One straight Lennard-Jones wall from a to b: particles at spacing ds on the segment.
+void add_wall_line(LiquidLayout& out, Vec3 a, Vec3 b, double ds);
+
+/// Dummy layers needed to fill a kernel's support below a wall: ceil(support * eta).
+int dummy_layers(const Params& prm, int dim);
+
+/// The particles: fluid first (rho from a hydrostatic column of depth `surface - y` under gravity g if
+/// g > 0, else rho0; mass rho dx^2), then walls (rho0, mass rho0 dx^2), every h = eta dx.
+Particles make_liquid(const Params& prm, const LiquidLayout& layout, double dx, double surface, double g);
+
+/// Lennard-Jones strength of seed 001 §7.2: D = 5 g H.
+inline double lj_strength(double g, double H) { return 5.0 * g * H; }
+
+}  // namespace sph::scenes
