@@ -8,6 +8,7 @@
 layout(location = 0) in vec3 a_center;  // particle position [world units]
 layout(location = 1) in float a_radius; // disc/sphere radius [world units]
 layout(location = 2) in float a_value;  // scalar field shown by colour [field units]
+layout(location = 3) in float a_wall;   // 1: wall particle, drawn in u_wall_color whatever its value; 0: fluid
 
 uniform mat4 u_view;           // world -> eye
 uniform mat4 u_proj;           // eye -> clip (orthographic in 1D/2D, perspective in 3D)
@@ -17,6 +18,7 @@ uniform float u_min_radius;    // smallest radius drawn [px]
 uniform vec2 u_range;          // field values mapped to the two ends of the colour map (min < max)
 uniform sampler1D u_cmap;      // 256-entry colour map, linear filtering
 uniform vec4 u_invalid_color;  // colour of NaN/inf values
+uniform vec4 u_wall_color;     // colour of wall particles (palette::kWall)
 
 out vec2 v_offset;            // this corner's offset from the centre [px], y up
 flat out vec3 v_color;        // colour-mapped value
@@ -42,6 +44,7 @@ void main() {
   float t = clamp((a_value - u_range.x) / (u_range.y - u_range.x), 0.0, 1.0);
   // Texel centres of the 256 entries sit at (i + 0.5)/256.
   v_color = finite ? textureLod(u_cmap, (t * 255.0 + 0.5) / 256.0, 0.0).rgb : u_invalid_color.rgb;
+  if (a_wall > 0.5) v_color = u_wall_color.rgb;
   clip.xy += v_offset * 2.0 / u_viewport * clip.w;
   gl_Position = clip;
 }

@@ -1,8 +1,10 @@
 // What the particle view shows: colour by one of the snapshot's fields (only the fields the scene's
-// modules allocate), the colour map, an automatic or fixed range, particle size, and the camera.
+// modules allocate), the colour map, an automatic or fixed range, in 2D the plane or a profile against
+// x or y, particle size, walls and reference outlines shown or hidden, and the camera.
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <string_view>
 
 #include "colormap.h"
@@ -10,18 +12,64 @@
 
 namespace sph::gui {
 
+namespace {
+
+// 2D: the plane, or a profile of the field against x or y (render::ViewSettings::profile_axis).
+void panel_view_kind(render::ViewSettings& v) {
+  const char* kNames[3] = {"plane", "profile against x", "profile against y"};
+  const int current = std::clamp(v.profile_axis + 1, 0, 2);
+  if (ImGui::BeginCombo("view", kNames[current])) {
+    for (int k = 0; k < 3; ++k)
+      if (ImGui::Selectable(kNames[k], k == current)) v.profile_axis = k - 1;
+    ImGui::EndCombo();
+  }
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("plane: the particles where they are.\n"
+                      "profile: the field (y axis) against x or y, one dot per fluid particle, with the\n"
+                      "scene's reference curve along that axis (e.g. hydrostatic pressure against y).");
+}
+
+bool has_walls(const Snapshot& snap) {
+  return std::any_of(snap.kind.begin(), snap.kind.end(), [](std::uint8_t k) { return k != 0; });
+}
+
+// Walls and reference outlines: greyed out when the snapshot has none.
+void overlay_toggles(const Snapshot& snap, render::ViewSettings& v) {
+  constexpr ImGuiHoveredFlags kEvenDisabled = ImGuiHoveredFlags_AllowWhenDisabled;
+  ImGui::BeginDisabled(!has_walls(snap));
+  ImGui::Checkbox("show walls", &v.show_walls);
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(kEvenDisabled))
+    ImGui::SetTooltip("Draw the wall (boundary) particles, in grey whatever the field; off hides them.\n"
+                      "Profiles never show them. (Greyed out: this scene has no walls.)");
+  if (snap.dim != 2) return;
+  ImGui::SameLine();
+  ImGui::BeginDisabled(snap.outlines.empty());
+  ImGui::Checkbox("reference outline", &v.show_outlines);
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(kEvenDisabled))
+    ImGui::SetTooltip("Draw the scene's reference shapes over the particles in white, e.g. the exact ellipse\n"
+                      "of the elliptical drop or the measured surge fronts of the dam break, with their labels.\n"
+                      "(Greyed out: this scene has none.)");
+}
+
+}  // namespace
+
 void panel_display(GuiState& s) {
   const StepperFrame* f = s.frame();
   render::ViewSettings& v = s.view;
   if (f == nullptr) return;
   const Snapshot& snap = f->snapshot;
   const SnapshotField* shown = snap.find(v.color_by);
-  if (ImGui::BeginCombo(snap.dim == 1 ? "plot / colour" : "colour by", shown ? shown->label.c_str() : v.color_by.c_str())) {
+  const bool profile = snap.dim == 1 || (snap.dim == 2 && v.profile_axis >= 0);
+  if (ImGui::BeginCombo(profile ? "plot / colour" : "colour by", shown ? shown->label.c_str() : v.color_by.c_str())) {
     for (const SnapshotField& fld : snap.fields)
       if (ImGui::Selectable(fld.label.c_str(), fld.name == v.color_by)) v.color_by = fld.name;
     ImGui::EndCombo();
   }
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Fields this scene's physics modules allocate (1D: also the y axis)");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Fields this scene's physics modules allocate (profiles: also the y axis).\n"
+                      "The automatic range is the fluid's: wall particles are always grey.");
   if (ImGui::BeginCombo("colour map", v.cmap.c_str())) {
     for (std::string_view name : render::colormap_names())
       if (ImGui::Selectable(std::string(name).c_str(), name == v.cmap)) v.cmap = std::string(name);
@@ -39,8 +87,13 @@ void panel_display(GuiState& s) {
       v.range_max = r[1];
     }
   }
-  if (snap.dim == 1) {
-    if (!snap.exact.empty()) ImGui::Checkbox("exact solution", &v.show_exact);
+  if (snap.dim == 2) panel_view_kind(v);
+  if (profile) {
+    if (!snap.exact.empty()) {
+      ImGui::Checkbox("exact solution", &v.show_exact);
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("The scene's exact or reference curve of the plotted field along this axis, if it has one");
+    }
     ImGui::SliderFloat("dot size", &v.point_px, 1.f, 8.f, "%.1f px");
   } else {
     bool by_h = v.size_mode == render::SizeMode::Smoothing;
@@ -52,6 +105,7 @@ void panel_display(GuiState& s) {
       ImGui::SliderFloat("##hs", &v.h_scale, 0.05f, 2.f, "radius %.2f h");
     else
       ImGui::SliderFloat("##px", &v.point_px, 0.5f, 10.f, "radius %.1f px");
+    overlay_toggles(snap, v);
     if (ImGui::Button("Fit view")) {
       v.camera2d = render::Camera2D{};
       v.orbit = render::OrbitCamera{};

@@ -21,7 +21,8 @@ bool same_view(const render::ViewSettings& a, const render::ViewSettings& b) {
          c.center_y == d.center_y && c.zoom == d.zoom && o.yaw_deg == q.yaw_deg && o.pitch_deg == q.pitch_deg &&
          o.distance == q.distance && o.zoom == q.zoom && o.fov_deg == q.fov_deg && o.up_axis == q.up_axis &&
          a.size_mode == b.size_mode && a.h_scale == b.h_scale && a.point_px == b.point_px &&
-         a.min_radius_px == b.min_radius_px && a.show_exact == b.show_exact && a.text_scale == b.text_scale;
+         a.min_radius_px == b.min_radius_px && a.show_exact == b.show_exact && a.show_walls == b.show_walls &&
+         a.show_outlines == b.show_outlines && a.profile_axis == b.profile_axis && a.text_scale == b.text_scale;
 }
 
 bool ParticleView::init(std::string* err) { return renderer_.init(&Window::get_proc, err); }
@@ -48,7 +49,7 @@ void ParticleView::interact(const Rect& r, const sph::Snapshot& snap, render::Vi
     if (over && io.MouseWheel != 0.f) view->orbit.zoom = std::clamp(view->orbit.zoom * std::pow(1.15f, io.MouseWheel), 0.05f, 50.f);
     return;
   }
-  if (snap.dim != 2) return;  // 1D profiles fit themselves
+  if (snap.dim != 2 || view->profile_axis >= 0) return;  // profiles (1D, or 2D against x or y) fit themselves
   // World units per pixel from the last frame's mapping (equal aspect).
   const render::Bounds b = render::view_bounds(snap);
   float x0 = 0, y0 = 0, x1 = 0, y1 = 0;

@@ -57,6 +57,7 @@ std::unique_ptr<FrameRecorder> make_recorder(const RunOptions& opt) {
     fo.range_min = lo;
     fo.range_max = hi;
   }
+  fo.profile_axis = opt.profile_axis;
   fo.video = opt.video;
   std::string err;
   auto rec = FrameRecorder::create(fo, &err);
@@ -109,6 +110,9 @@ int run_command(const RunOptions& opt) {
         }
       }
       rec = make_recorder(opt);  // validates the frame flags before anything is written
+      if (rec && rec->view().profile_axis >= 0 && cfg.scene->dim != 2)
+        std::fprintf(stderr, "sph: note: %s applies to 2D scenes; %s is %dD, so it is ignored\n",
+                     flag::kProfileAxis, cfg.scene->name.c_str(), cfg.scene->dim);
     } catch (const ConfigError& e) {
       std::fprintf(stderr, "sph: %s\n", e.what());
       return kUsage;

@@ -16,6 +16,7 @@
 
 #include "colormap.h"
 #include "field_range.h"
+#include "profile_axis.h"
 #include "sph/snapshot.h"
 
 // stb_image_write's own deflate is ~4x slower than zlib at its fastest level, which compresses these
@@ -200,6 +201,7 @@ FrameRecorder::FrameRecorder(const FrameOptions& options, std::unique_ptr<Offscr
   view_.auto_range = options.auto_range;
   view_.range_min = options.range_min;
   view_.range_max = options.range_max;
+  view_.profile_axis = render::parse_profile_axis(options.profile_axis).value_or(-1);
 }
 
 FrameRecorder::~FrameRecorder() {
@@ -219,6 +221,10 @@ std::unique_ptr<FrameRecorder> FrameRecorder::create(const FrameOptions& o, std:
   if (!render::parse_colormap(o.cmap)) {
     fail(err, std::string(flag::kCmap) + ": unknown colour map '" + o.cmap + "' (choose from " +
                   render::colormap_name_list() + ")");
+    return nullptr;
+  }
+  if (!render::parse_profile_axis(o.profile_axis)) {
+    fail(err, std::string(flag::kProfileAxis) + ": unknown axis '" + o.profile_axis + "' (choose x, y or off)");
     return nullptr;
   }
   if (o.color_by.empty()) {

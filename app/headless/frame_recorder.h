@@ -24,6 +24,7 @@ inline constexpr const char* kSize = "--size";  // WIDTHxHEIGHT
 inline constexpr const char* kColorBy = "--color-by";
 inline constexpr const char* kCmap = "--cmap";
 inline constexpr const char* kRange = "--range";
+inline constexpr const char* kProfileAxis = "--profile-axis";
 inline constexpr const char* kVideo = "--video";
 inline constexpr const char* kFps = "--fps";
 }  // namespace flag
@@ -37,6 +38,7 @@ struct FrameOptions {
   std::string cmap = "viridis";
   bool auto_range = true;     ///< per-frame min/max of the field; else [range_min, range_max]
   float range_min = 0, range_max = 1;
+  std::string profile_axis = "off";  ///< 2D: "x" or "y" (profile of the field against it), or "off"
   std::string video;          ///< mp4 path to make from the frames, or empty
   int fps = 30;               ///< video frame rate [frames per second]
 };
@@ -74,8 +76,9 @@ class FrameRecorder {
  public:
   /// Flushes; a write error not collected by flush() or make_video() is printed to stderr.
   ~FrameRecorder();
-  /// Validates the options (even width/height, known colour map, positive interval and fps) and
-  /// creates the directory and the context; nullptr with *err naming the offending flag otherwise.
+  /// Validates the options (even width/height, known colour map and profile axis, positive interval
+  /// and fps) and creates the directory and the context; nullptr with *err naming the offending flag
+  /// otherwise.
   static std::unique_ptr<FrameRecorder> create(const FrameOptions& options, std::string* err);
 
   /// True when the snapshot at time t should become the next frame: the first call, then once t

@@ -53,8 +53,10 @@ bool project(const float* in, const SplatParams& p, const Rows& mvp, const Rows&
   o->eye_r = r / px_per_unit;
   if (!std::isfinite(o->wx) || !std::isfinite(o->wy) || !std::isfinite(r)) return false;
   const float v = in[4];
-  o->color = std::isfinite(v) ? colormap_rgb(p.cmap, (v - p.range.min) / (p.range.max - p.range.min))
-                              : Rgb{p.invalid.r, p.invalid.g, p.invalid.b};
+  const bool wall = in[5] > 0.5f;  // walls: their own colour, whatever the value
+  const Rgba& fixed = wall ? p.colors.wall : p.colors.invalid;
+  o->color = std::isfinite(v) && !wall ? colormap_rgb(p.cmap, (v - p.range.min) / (p.range.max - p.range.min))
+                                       : Rgb{fixed.r, fixed.g, fixed.b};
   return true;
 }
 

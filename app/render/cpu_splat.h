@@ -13,6 +13,12 @@
 
 namespace sph::render {
 
+/// Colours that do not come from the map: non-finite values, and wall particles.
+struct FixedColors {
+  Rgba invalid;
+  Rgba wall;
+};
+
 struct SplatParams {
   Mat4 view, proj;            ///< world -> eye -> clip, as for the GPU path
   int width = 0, height = 0;  ///< plot viewport [px]
@@ -20,7 +26,7 @@ struct SplatParams {
   float min_radius = 1.f;     ///< smallest radius [px]
   ValueRange range;
   Colormap cmap = Colormap::Viridis;
-  Rgba invalid;               ///< colour of non-finite values
+  FixedColors colors;         ///< colour of non-finite values and of walls
   bool shaded = false;        ///< lit spheres with depth (3D) instead of flat discs
 };
 
@@ -38,7 +44,7 @@ struct SplatImage {
   ~SplatImage();
 };
 
-/// Draws instances (x, y, z, radius, value per particle, in order) into out.
+/// Draws instances (kInstanceFloats per particle: x, y, z, radius, value, wall; in order) into out.
 void splat_particles(const std::vector<float>& instances, const SplatParams& p, SplatImage* out);
 
 }  // namespace sph::render

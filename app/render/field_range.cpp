@@ -17,14 +17,16 @@ ValueRange widen_degenerate(float lo, float hi) {
   return {mid - d, mid + d};
 }
 
-ValueRange resolve_range(const sph::SnapshotField& field, const ViewSettings& view) {
+ValueRange resolve_range(const sph::SnapshotField& field, const ViewSettings& view, std::span<const std::uint8_t> kind) {
   if (!view.auto_range) return widen_degenerate(view.range_min, view.range_max);
   float lo = field.min, hi = field.max;
   if (!std::isfinite(lo) || !std::isfinite(hi) || lo > hi || (lo == 0.f && hi == 0.f)) {
     lo = INFINITY;
     hi = -INFINITY;
-    for (float v : field.values)
-      if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+    for (std::size_t i = 0; i < field.values.size(); ++i) {
+      const float v = field.values[i];
+      if (std::isfinite(v) && !(i < kind.size() && kind[i] != 0)) lo = std::min(lo, v), hi = std::max(hi, v);
+    }
     if (lo > hi) lo = hi = 0.f;  // no finite value at all
   }
   return widen_degenerate(lo, hi);

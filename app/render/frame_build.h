@@ -26,8 +26,9 @@ struct ShownField {
   std::string warning;                        ///< shown in the title row when non-empty
 };
 
-/// Per-particle instance layout of particles.vert: x, y, z, radius [world], value.
-inline constexpr int kInstanceFloats = 5;
+/// Per-particle instance layout of particles.vert (and cpu_splat): x, y, z, radius [world], value
+/// [field units], wall (1: drawn in palette::kWall whatever the value, 0: colour-mapped fluid).
+inline constexpr int kInstanceFloats = 6;
 
 struct FrameBuild {
   explicit FrameBuild(const FontAtlas& font) : text(font) {}

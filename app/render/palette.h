@@ -1,4 +1,5 @@
-// Colours of everything that is not data: a dark-grey theme readable on a projector.
+// Colours of everything that is not data (and of wall particles): a dark-grey theme readable on a
+// projector.
 #pragma once
 #include "overlay_types.h"
 
@@ -15,5 +16,14 @@ inline constexpr Rgba kWarning{1.00f, 0.70f, 0.25f, 1.f};        ///< "field not
 inline constexpr Rgba kLegendFill{0.08f, 0.08f, 0.09f, 0.80f};   ///< legend box
 inline constexpr Rgba kInvalid{1.00f, 0.00f, 1.00f, 1.f};        ///< particles whose value is NaN/inf
 inline constexpr Rgba kNoField{0.80f, 0.80f, 0.82f, 1.f};        ///< particles when no field is shown
+/// Wall particles, whatever the field: a neutral grey at least 43/255 (per channel) from every colour
+/// of the four maps (cividis passes nearest, through its grey middle), and from kNoField.
+inline constexpr Rgba kWall{0.64f, 0.64f, 0.64f, 1.f};
+/// Reference outlines (2D), one colour per distinct label in order: near white first (most scenes
+/// have one label), then amber, sky blue, pink; each drawn on kOutlineHalo, which keeps it visible
+/// over any colour of any map.
+inline constexpr Rgba kOutlines[4] = {
+    {0.98f, 0.98f, 0.98f, 1.f}, {1.00f, 0.78f, 0.25f, 1.f}, {0.45f, 0.80f, 1.00f, 1.f}, {1.00f, 0.50f, 0.80f, 1.f}};
+inline constexpr Rgba kOutlineHalo{0.04f, 0.04f, 0.05f, 1.f};  ///< dark rim under the outlines
 
 }  // namespace sph::render::palette

@@ -8,27 +8,38 @@
 
 namespace sph::render {
 
-void build_instances(const sph::Snapshot& snap, const ShownField& shown, Placement placement, float radius_scale,
+void build_instances(const sph::Snapshot& snap, const ShownField& shown, const InstanceOptions& o,
                      std::vector<float>* out) {
   const std::size_t n = std::min(snap.count, snap.x.size());
   const std::vector<float>* values = shown.field ? &shown.field->values : nullptr;
   auto at = [](const std::vector<float>& v, std::size_t i, float fallback) { return i < v.size() ? v[i] : fallback; };
+  const std::vector<float>* coords[3] = {&snap.x, &snap.y, &snap.z};
+  const std::vector<float>& along = *coords[std::clamp(o.axis, 0, 2)];
+  const bool profile = o.placement == Placement::Profile;
+  const bool keep_walls = o.walls && !profile;
   constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
-  out->resize(out->size() + n * kInstanceFloats);
-  float* p = out->data() + out->size() - n * kInstanceFloats;
-  for (std::size_t i = 0; i < n; ++i, p += kInstanceFloats) {
+  const std::size_t first = out->size();
+  out->resize(first + n * kInstanceFloats);  // the most we write; trimmed below when walls are left out
+  float* p = out->data() + first;
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool wall = snap.is_wall(i);
+    if (wall && !keep_walls) continue;
     const float value = values ? at(*values, i, kNaN) : kNaN;
-    p[0] = snap.x[i];
-    if (placement == Placement::Profile) {
+    if (profile) {
+      p[0] = at(along, i, 0.f);
       p[1] = std::isfinite(value) ? value : 0.f;
       p[2] = 0.f;
     } else {
+      p[0] = snap.x[i];
       p[1] = snap.dim >= 2 ? at(snap.y, i, 0.f) : 0.f;
       p[2] = snap.dim >= 3 ? at(snap.z, i, 0.f) : 0.f;
     }
-    p[3] = radius_scale * at(snap.h, i, 0.f);
+    p[3] = o.radius_scale * at(snap.h, i, 0.f);
     p[4] = value;
+    p[5] = wall ? 1.f : 0.f;
+    p += kInstanceFloats;
   }
+  out->resize(static_cast<std::size_t>(p - out->data()));
 }
 
 bool has_smoothing_lengths(const sph::Snapshot& snap) {

@@ -1,4 +1,4 @@
-// Packs snapshot arrays into the particle pass's instance layout (x, y, z, radius, value).
+// Packs snapshot arrays into the particle pass's instance layout (x, y, z, radius, value, wall).
 #pragma once
 #include <vector>
 
@@ -12,12 +12,19 @@ namespace sph::render {
 
 enum class Placement {
   Positions,  ///< (x, y, z) as they are (2D: z = 0)
-  Profile,    ///< (x, value, 0): the 1D profile plot
+  Profile,    ///< (coordinate `axis`, value, 0): profile plots; walls are always left out
 };
 
-/// Appends one instance per particle: radius = radius_scale * h [world units], value = shown field
-/// (NaN when no field is shown). Short or missing arrays read as 0 (positions, h) or NaN (values).
-void build_instances(const sph::Snapshot& snap, const ShownField& shown, Placement placement, float radius_scale,
+struct InstanceOptions {
+  Placement placement = Placement::Positions;
+  int axis = 0;              ///< Profile: the coordinate on the horizontal axis (0 x, 1 y, 2 z)
+  float radius_scale = 0.f;  ///< radius = radius_scale * h [world units]
+  bool walls = true;         ///< Positions: include wall particles (flagged, drawn grey)
+};
+
+/// Appends one instance per shown particle: value = shown field (NaN when no field is shown), wall =
+/// 1 for Snapshot::is_wall. Short or missing arrays read as 0 (positions, h) or NaN (values).
+void build_instances(const sph::Snapshot& snap, const ShownField& shown, const InstanceOptions& options,
                      std::vector<float>* out);
 /// True if the snapshot has a positive smoothing length for some particle.
 bool has_smoothing_lengths(const sph::Snapshot& snap);

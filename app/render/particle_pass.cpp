@@ -26,10 +26,10 @@ bool ParticlePass::init(const GlApi& gl, std::string* err) {
   gl.BindVertexArray(vao_);
   gl.BindBuffer(GL_ARRAY_BUFFER, vbo_);
   const GLsizei stride = kInstanceFloats * sizeof(float);
-  // location 0: centre (3 floats), 1: radius, 2: value; one step per instance.
-  const GLint sizes[3] = {3, 1, 1};
-  const std::uintptr_t offsets[3] = {0, 3 * sizeof(float), 4 * sizeof(float)};
-  for (GLuint loc = 0; loc < 3; ++loc) {
+  // location 0: centre (3 floats), 1: radius, 2: value, 3: wall flag; one step per instance.
+  const GLint sizes[4] = {3, 1, 1, 1};
+  const std::uintptr_t offsets[4] = {0, 3 * sizeof(float), 4 * sizeof(float), 5 * sizeof(float)};
+  for (GLuint loc = 0; loc < 4; ++loc) {
     gl.EnableVertexAttribArray(loc);
     gl.VertexAttribPointer(loc, sizes[loc], GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(offsets[loc]));
     gl.VertexAttribDivisor(loc, 1);
@@ -73,16 +73,17 @@ void ParticlePass::upload_colormap(const GlApi& gl, Colormap cmap) {
   cmap_loaded_ = static_cast<int>(cmap);
 }
 
-void ParticlePass::draw(const GlApi& gl, const FrameBuild& f, Colormap cmap, const ValueRange& range, Rgba invalid) {
+void ParticlePass::draw(const GlApi& gl, const FrameBuild& f, Colormap cmap, const ValueRange& range,
+                        const FixedColors& colors) {
   if (f.instances.empty()) return;
   if (uses_cpu())
-    draw_cpu(gl, f, cmap, range, invalid);
+    draw_cpu(gl, f, cmap, range, colors);
   else
-    draw_gpu(gl, f, cmap, range, invalid);
+    draw_gpu(gl, f, cmap, range, colors);
 }
 
 void ParticlePass::draw_gpu(const GlApi& gl, const FrameBuild& f, Colormap cmap, const ValueRange& range,
-                            Rgba invalid) {
+                            const FixedColors& colors) {
   const GlProgram& prog = f.shaded ? shaded_ : flat_;
   gl.UseProgram(prog.id());
   gl.ActiveTexture(GL_TEXTURE0);
@@ -95,7 +96,10 @@ void ParticlePass::draw_gpu(const GlApi& gl, const FrameBuild& f, Colormap cmap,
   gl.Uniform1f(prog.uniform(gl, "u_pixel_radius"), f.pixel_radius);
   gl.Uniform1f(prog.uniform(gl, "u_min_radius"), f.min_radius);
   gl.Uniform2f(prog.uniform(gl, "u_range"), range.min, range.max);
-  gl.Uniform4f(prog.uniform(gl, "u_invalid_color"), invalid.r, invalid.g, invalid.b, invalid.a);
+  const Rgba& bad = colors.invalid;
+  const Rgba& wall = colors.wall;
+  gl.Uniform4f(prog.uniform(gl, "u_invalid_color"), bad.r, bad.g, bad.b, bad.a);
+  gl.Uniform4f(prog.uniform(gl, "u_wall_color"), wall.r, wall.g, wall.b, wall.a);
 
   gl.BindVertexArray(vao_);
   gl.BindBuffer(GL_ARRAY_BUFFER, vbo_);
@@ -117,7 +121,7 @@ void ParticlePass::draw_gpu(const GlApi& gl, const FrameBuild& f, Colormap cmap,
 }
 
 void ParticlePass::draw_cpu(const GlApi& gl, const FrameBuild& f, Colormap cmap, const ValueRange& range,
-                            Rgba invalid) {
+                            const FixedColors& colors) {
   SplatParams p;
   p.view = f.camera.view;
   p.proj = f.camera.proj;
@@ -127,7 +131,7 @@ void ParticlePass::draw_cpu(const GlApi& gl, const FrameBuild& f, Colormap cmap,
   p.min_radius = f.min_radius;
   p.range = range;
   p.cmap = cmap;
-  p.invalid = invalid;
+  p.colors = colors;
   p.shaded = f.shaded;
   splat_particles(f.instances, p, &splat_);
 

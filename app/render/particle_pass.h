@@ -26,13 +26,15 @@ class ParticlePass {
   void set_path(ParticlePath path) { path_ = path; }
   bool uses_cpu() const { return path_ == ParticlePath::Cpu || (path_ == ParticlePath::Auto && software_gl_); }
 
-  /// Draws f.instances into the current viewport (which must be f.layout.plot). `invalid` colours
-  /// non-finite values (and every particle when no field is shown).
-  void draw(const GlApi& gl, const FrameBuild& f, Colormap cmap, const ValueRange& range, Rgba invalid);
+  /// Draws f.instances into the current viewport (which must be f.layout.plot). `colors.invalid`
+  /// colours non-finite values (and every particle when no field is shown), `colors.wall` walls.
+  void draw(const GlApi& gl, const FrameBuild& f, Colormap cmap, const ValueRange& range, const FixedColors& colors);
 
  private:
-  void draw_gpu(const GlApi& gl, const FrameBuild& f, Colormap cmap, const ValueRange& range, Rgba invalid);
-  void draw_cpu(const GlApi& gl, const FrameBuild& f, Colormap cmap, const ValueRange& range, Rgba invalid);
+  void draw_gpu(const GlApi& gl, const FrameBuild& f, Colormap cmap, const ValueRange& range,
+                const FixedColors& colors);
+  void draw_cpu(const GlApi& gl, const FrameBuild& f, Colormap cmap, const ValueRange& range,
+                const FixedColors& colors);
   void upload_colormap(const GlApi& gl, Colormap cmap);
 
   GlProgram flat_, shaded_, image_;

@@ -1,6 +1,7 @@
 #include "plane_view.h"
 
 #include "axes.h"
+#include "outline_overlay.h"
 #include "palette.h"
 #include "particle_instances.h"
 #include "sph/snapshot.h"
@@ -33,9 +34,11 @@ void compose_plane(FrameBuild& f, const sph::Snapshot& snap, const ViewSettings&
   }
 
   const bool from_h = view.size_mode == SizeMode::Smoothing && has_smoothing_lengths(snap);
-  build_instances(snap, shown, Placement::Positions, view.h_scale, &f.instances);
+  build_instances(snap, shown, {Placement::Positions, 0, view.h_scale, view.show_walls}, &f.instances);
   f.pixel_radius = from_h ? 0.f : view.point_px;
   f.min_radius = view.min_radius_px;
+
+  if (view.show_outlines) add_outlines(f, snap);  // over the particles, clipped to the plot
 }
 
 }  // namespace sph::render

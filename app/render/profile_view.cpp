@@ -4,8 +4,10 @@
 #include <cmath>
 
 #include "axes.h"
+#include "legend.h"
 #include "palette.h"
 #include "particle_instances.h"
+#include "profile_axis.h"
 #include "sph/snapshot.h"
 #include "ticks.h"
 
@@ -16,10 +18,12 @@ namespace {
 constexpr double kXPad = 0.02;  // air left and right of the domain, fraction of its length
 constexpr double kYPad = 0.06;  // air above and below the data (auto range), fraction of the range
 
-const sph::ExactCurve* shown_curve(const sph::Snapshot& snap, const ViewSettings& view, const ShownField& shown) {
+const sph::ExactCurve* shown_curve(const sph::Snapshot& snap, const ViewSettings& view, const ShownField& shown,
+                                   int axis) {
   if (!view.show_exact || shown.field == nullptr) return nullptr;
-  const sph::ExactCurve* c = snap.find_exact(shown.field->name);
-  return (c && c->x.size() >= 2 && c->value.size() >= c->x.size()) ? c : nullptr;
+  for (const sph::ExactCurve& c : snap.exact)
+    if (c.field == shown.field->name && c.axis == axis && c.x.size() >= 2 && c.value.size() >= c.x.size()) return &c;
+  return nullptr;
 }
 
 // Vertical limits: the colour range (fixed ranges are taken as given), widened to include the exact
@@ -41,37 +45,21 @@ void y_limits(const ShownField& shown, const sph::ExactCurve* curve, const ViewS
   nice_limits(lo, hi, 10);  // round to a tenth of the range: little wasted headroom
 }
 
-void add_legend(FrameBuild& f, const PixelRect& box, Rgb curve_color, Rgba dot_color, float dot_radius) {
-  const int s = f.layout.text_scale;
-  const float lh = f.text.line_height(s);
-  const float sample = 22.f * s;  // legend sample length [px]
-  const float pad = 6.f * s;
-  const char* kExact = "exact";
-  const char* kSph = "SPH particles";
-  const float w = pad * 3 + sample + std::max(f.text.measure(kExact, s), f.text.measure(kSph, s));
-  const float h = pad * 2 + 2.f * lh + 2.f * s;
-  const PixelRect r{std::round(box.right() - w - pad), std::round(box.y + pad), std::round(w), std::round(h)};
-  f.over.fill_rect(r, palette::kLegendFill);
-  const float x0 = r.x + pad, x1 = x0 + sample;
-  const float y_exact = r.y + pad + 0.5f * lh, y_sph = y_exact + lh + 2.f * s;
-  f.over.line(x0, y_exact, x1, y_exact, 0.75f * s + 0.5f, {curve_color.r, curve_color.g, curve_color.b, 1.f});
-  f.over.disc(0.5f * (x0 + x1), y_sph, dot_radius, dot_color);
-  f.text.add(kExact, x1 + pad, y_exact - 0.5f * lh, s, palette::kText);
-  f.text.add(kSph, x1 + pad, y_sph - 0.5f * lh, s, palette::kText);
-}
-
 }  // namespace
 
-void compose_profile(FrameBuild& f, const sph::Snapshot& snap, const ViewSettings& view, const ShownField& shown) {
+void compose_profile(FrameBuild& f, const sph::Snapshot& snap, const ViewSettings& view, const ShownField& shown,
+                     int axis) {
+  axis = std::clamp(axis, 0, 2);
   FrameLayout& L = f.layout;
   const int s = L.text_scale;
   const float lh = f.text.line_height(s);
   const Bounds b = view_bounds(snap);
   AxesRanges r;
-  const double dx = kXPad * (b[1] - b[0]);
-  r.x0 = b[0] - dx;
-  r.x1 = b[1] + dx;
-  const sph::ExactCurve* curve = shown_curve(snap, view, shown);
+  const float c0 = b[2 * axis], c1 = b[2 * axis + 1];  // the coordinate's extent
+  const double dx = kXPad * (c1 - c0);
+  r.x0 = c0 - dx;
+  r.x1 = c1 + dx;
+  const sph::ExactCurve* curve = shown_curve(snap, view, shown, axis);
   y_limits(shown, curve, view, r.y0, r.y1);
 
   // Two passes: the y labels' width depends on the box height, which depends on the labels.
@@ -83,8 +71,8 @@ void compose_profile(FrameBuild& f, const sph::Snapshot& snap, const ViewSetting
               Vec3f{}};
   L.plot_to_clip = f.camera.proj;
 
-  add_axes(f, box, r, {"x", shown.field ? shown.label : std::string("(no field)"), true});
-  build_instances(snap, shown, Placement::Profile, 0.f, &f.instances);
+  add_axes(f, box, r, {std::string(profile_axis_name(axis)), shown.field ? shown.label : std::string("(no field)"), true});
+  build_instances(snap, shown, {Placement::Profile, axis, 0.f, false}, &f.instances);
   f.pixel_radius = view.point_px * 0.5f * static_cast<float>(1 + s);  // grows with the text: 3 px -> 4.5 px at 720p
 
   if (curve != nullptr) {
@@ -100,7 +88,9 @@ void compose_profile(FrameBuild& f, const sph::Snapshot& snap, const ViewSetting
     // Thinner than the dots, so that the particles stay visible on both sides of the curve.
     f.clipped.polyline(xy, 0.75f * s + 0.5f, {c.r, c.g, c.b, 1.f});
     const Rgb mid = colormap_rgb(shown.cmap, 0.5f);
-    add_legend(f, box, c, {mid.r, mid.g, mid.b, 1.f}, f.pixel_radius);
+    const LegendEntry rows[2] = {{"exact", false, {c.r, c.g, c.b, 1.f}, 0.75f * s + 0.5f, {0, 0, 0, 0}},
+                                 {"SPH particles", true, {mid.r, mid.g, mid.b, 1.f}, f.pixel_radius, {0, 0, 0, 0}}};
+    add_legend(f, box, rows);
   }
 }
 

@@ -37,7 +37,7 @@ ShownField choose_field(const sph::Snapshot& snap, const ViewSettings& view) {
   }
   if (s.field == nullptr) return s;
   s.label = s.field->label.empty() ? s.field->name : s.field->label;
-  s.range = resolve_range(*s.field, view);
+  s.range = resolve_range(*s.field, view, snap.kind);  // the fluid's range: walls are grey
   return s;
 }
 
@@ -94,7 +94,9 @@ void Renderer::compose(FrameBuild& f, const sph::Snapshot& snap, const ViewSetti
   f.clear();
   layout_chrome(f, shown, width, height, view.text_scale);
   if (snap.dim == 1)
-    compose_profile(f, snap, view, shown);
+    compose_profile(f, snap, view, shown, 0);
+  else if (snap.dim == 2 && (view.profile_axis == 0 || view.profile_axis == 1))
+    compose_profile(f, snap, view, shown, view.profile_axis);
   else if (snap.dim == 3)
     compose_orbit(f, snap, view, shown);
   else
@@ -134,7 +136,7 @@ void Renderer::draw(Impl& d, const ShownField& shown, int width, int height) {
 
   const PixelRect& plot = f.layout.plot;
   set_viewport(gl, plot, height);
-  d.particles.draw(gl, f, shown.cmap, shown.range, shown.field ? palette::kInvalid : palette::kNoField);
+  d.particles.draw(gl, f, shown.cmap, shown.range, {shown.field ? palette::kInvalid : palette::kNoField, palette::kWall});
   gl.Viewport(0, 0, width, height);
 
   scissor(plot);

@@ -2,7 +2,9 @@
 // currently bound framebuffer with OpenGL 3.3 core, loaded through a get_proc_address seam.
 //
 //   dim 1: profile plot (x against the field) with the exact curve drawn over the particles;
-//   dim 2: discs in an equal-aspect axes box;  dim 3: lit spheres under an orbit camera.
+//   dim 2: discs in an equal-aspect axes box with the reference outlines over them, or (ViewSettings::
+//          profile_axis) a profile of the field against x or y;  dim 3: lit spheres under an orbit camera.
+//   Wall particles are grey (palette::kWall) in 2D and 3D, whatever the field, and left out of profiles.
 //   Always: a title row (scene, time, step) and a colour bar with the field label and range.
 //
 // Use from the thread that owns the GL context; destroy (or shutdown()) while it is current.

@@ -1,4 +1,5 @@
-// What the viewer chose: field and colour map, value range, cameras, particle size, text size.
+// What the viewer chose: field and colour map, value range, cameras, particle size, text size, which
+// overlays (walls, outlines, exact curves) and, in 2D, the plane or a profile against x or y.
 // Plain values with defaults; the GUI edits its own copy, the headless program fills one from flags.
 #pragma once
 #include <string>
@@ -41,7 +42,10 @@ struct ViewSettings {
   float point_px = 3.f;        ///< radius in Pixels mode, and of the 1D profile dots [px]
   float min_radius_px = 1.f;   ///< smallest disc drawn [px]
 
-  bool show_exact = true;      ///< 1D: draw the exact/reference curve when the snapshot has one
+  bool show_exact = true;      ///< profiles: draw the exact/reference curve when the snapshot has one
+  bool show_walls = true;      ///< 2D/3D: draw wall particles (in palette::kWall); profiles never show them
+  bool show_outlines = true;   ///< 2D: draw the snapshot's reference outlines over the particles
+  int profile_axis = -1;       ///< 2D: -1 = the plane view; 0 / 1 = profile of the field against x / y
   int text_scale = 0;          ///< integer pixel scale of the 13 px font; 0 = from the frame height
 };
 

@@ -35,6 +35,7 @@ Params liquid_defaults(double H) {
   d.liquid.gamma = 7.0;
   d.liquid.c0 = 10.0 * std::sqrt(2.0 * kG * H);
   d.density.diffusion = 0.1;
+  d.liquid.p_min = 0.0;  // no tension: negative pressures at fronts and tips broke the corrected forms up
   d.visc.alpha = 0.1;  // seed 001: alpha ~ 0.01-0.1, beta = 0
   d.visc.beta = 0.0;
   d.body.gx = 0.0;

@@ -84,6 +84,7 @@ SceneSpec elliptical_drop_scene() {
   // (at alpha = 0.03: t = 6.7 ms with h = 1.5 dx, 9.3 ms with h = 1.6 dx; at h = 1.3 dx only alpha >= 0.1
   // survived, which holds the major axis 1.1% short at 7.6 ms).
   d.density.diffusion = 0.1;
+  d.liquid.p_min = 0.0;  // no tension: negative pressures at fronts and tips broke the corrected forms up
   d.time.integrator = IntegratorType::PredictorCorrector;  // seed 001 eqs. 56-59
   d.time.cfl = 0.3;
   d.time.t_end = 0.0076;

@@ -94,6 +94,24 @@ TEST_F(FrameRecorderTest, ValidationNamesTheFlag) {
   EXPECT_NE(err.find("--frames"), std::string::npos) << err;
 }
 
+TEST_F(FrameRecorderTest, ProfileAxisIsXYOrOff) {
+  std::string err;
+  FrameOptions o = options();
+  for (const char* bad : {"z", "", "X", "yes"}) {
+    o.profile_axis = bad;
+    EXPECT_EQ(FrameRecorder::create(o, &err), nullptr) << bad;
+    EXPECT_NE(err.find("--profile-axis"), std::string::npos) << err;
+    EXPECT_NE(err.find("x, y or off"), std::string::npos) << err;
+  }
+  for (auto [name, axis] : {std::pair{"off", -1}, {"x", 0}, {"y", 1}}) {
+    o.profile_axis = name;
+    auto rec = FrameRecorder::create(o, &err);
+    ASSERT_NE(rec, nullptr) << err;
+    EXPECT_EQ(rec->view().profile_axis, axis) << name;
+  }
+  EXPECT_EQ(FrameOptions{}.profile_axis, "off");
+}
+
 TEST_F(FrameRecorderTest, WritesNumberedPngsOfTheRequestedSize) {
   std::string err;
   auto rec = FrameRecorder::create(options(), &err);

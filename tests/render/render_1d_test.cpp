@@ -11,13 +11,7 @@ class Render1D : public OffscreenTest {
  protected:
   // Is there a pixel within +-radius of (px, py) with colour c?
   static bool colour_near(const std::vector<std::uint8_t>& rgba, float px, float py, Pixel c, int radius, int tol) {
-    for (int dy = -radius; dy <= radius; ++dy)
-      for (int dx = -radius; dx <= radius; ++dx) {
-        const int x = static_cast<int>(px) + dx, y = static_cast<int>(py) + dy;
-        if (x >= 0 && y >= 0 && x < kWidth && y < kHeight && channel_distance(pixel_at(rgba, kWidth, x, y), c) <= tol)
-          return true;
-      }
-    return false;
+    return test::colour_near(rgba, kWidth, kHeight, px, py, c, radius, tol);
   }
 };
 

@@ -41,6 +41,16 @@ TEST_F(ParticlePaths, Discs2DAgree) { compare(lattice_2d(20, 10), ViewSettings{}
 
 TEST_F(ParticlePaths, ManySmallOverlappingDiscsAgree) { compare(random_cloud(2, 20000), ViewSettings{}, 1e-4, 3); }
 
+TEST_F(ParticlePaths, GreyWallsAgree) {
+  ViewSettings v;
+  v.cmap = "cividis";  // the map with a grey middle
+  compare(tank_2d(20, 10), v, 1e-4, 3);
+  Snapshot ball = ball_3d(3000);
+  ball.kind.assign(ball.count, 0);
+  for (std::size_t k = 0; k < ball.count; k += 3) ball.kind[k] = 1;
+  compare(ball, v, 1e-4, 3);
+}
+
 TEST_F(ParticlePaths, ProfileDotsAgree) { compare(sod_profile_1d(400), ViewSettings{}, 1e-4, 3); }
 
 TEST_F(ParticlePaths, ShadedSpheresAgree) {

@@ -55,6 +55,27 @@ inline int count_drawn(const std::vector<std::uint8_t>& rgba, int width, const P
   return n;
 }
 
+/// Is there a pixel within +-radius of (px, py) whose colour is within tol of c?
+inline bool colour_near(const std::vector<std::uint8_t>& rgba, int width, int height, float px, float py, Pixel c,
+                        int radius, int tol) {
+  for (int dy = -radius; dy <= radius; ++dy)
+    for (int dx = -radius; dx <= radius; ++dx) {
+      const int x = static_cast<int>(px) + dx, y = static_cast<int>(py) + dy;
+      if (x >= 0 && y >= 0 && x < width && y < height && channel_distance(pixel_at(rgba, width, x, y), c) <= tol)
+        return true;
+    }
+  return false;
+}
+
+/// Pixels inside r within tol of colour c.
+inline int count_colour(const std::vector<std::uint8_t>& rgba, int width, const PixelRect& r, Pixel c, int tol) {
+  int n = 0;
+  for (int y = static_cast<int>(r.y); y < static_cast<int>(r.bottom()); ++y)
+    for (int x = static_cast<int>(r.x); x < static_cast<int>(r.right()); ++x)
+      n += channel_distance(pixel_at(rgba, width, x, y), c) <= tol;
+  return n;
+}
+
 /// One off-screen renderer shared by all tests of a suite (context creation is the slow part).
 class OffscreenTest : public ::testing::Test {
  protected:

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 
 namespace sph::render::test {
 
@@ -82,6 +83,37 @@ Snapshot lattice_2d(int nx, int ny) {
   set_range(p);
   s.fields = {rho, p};
   return s;
+}
+
+Snapshot tank_2d(int nx, int ny) {
+  Snapshot s = lattice_2d(nx, ny);
+  s.scene = "tank";
+  s.kind.assign(s.count, 0);
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+      if (j == 0 || i == 0 || i == nx - 1) {
+        const std::size_t k = lattice_index(nx, i, j);
+        s.kind[k] = 1;
+        for (SnapshotField& f : s.fields) f.values[k] = kWallValue;
+      }
+  for (SnapshotField& f : s.fields) {  // the fluid's range
+    f.min = INFINITY;
+    f.max = -INFINITY;
+    for (std::size_t k = 0; k < s.count; ++k)
+      if (!s.is_wall(k)) f.min = std::min(f.min, f.values[k]), f.max = std::max(f.max, f.values[k]);
+  }
+  return s;
+}
+
+Outline circle_outline(std::string label, float cx, float cy, float r, int n) {
+  Outline o;
+  o.label = std::move(label);
+  for (int k = 0; k <= n; ++k) {
+    const double a = 6.283185307179586 * k / n;
+    o.x.push_back(cx + r * static_cast<float>(std::cos(a)));
+    o.y.push_back(cy + r * static_cast<float>(std::sin(a)));
+  }
+  return o;
 }
 
 float sod_exact_rho(float x) {

@@ -1,6 +1,7 @@
 // Hand-built snapshots for the renderer tests and benchmark (no engine library involved).
 #pragma once
 #include <cstddef>
+#include <string>
 
 #include "sph/snapshot.h"
 
@@ -11,6 +12,14 @@ namespace sph::render::test {
 Snapshot lattice_2d(int nx, int ny);
 /// Value of "rho" at lattice_2d's particle (i, j) and its index in the arrays.
 std::size_t lattice_index(int nx, int i, int j);
+
+/// lattice_2d whose bottom row and first and last columns are walls (kind 1); their "rho" and "p" are
+/// kWallValue, far outside the fluid's ranges, which min/max cover (as the engine's do).
+Snapshot tank_2d(int nx, int ny);
+inline constexpr float kWallValue = 1000.f;
+
+/// A closed polyline of n + 1 vertices around the circle (cx, cy, r) in world units.
+Outline circle_outline(std::string label, float cx, float cy, float r, int n);
 
 /// Sod shock tube at t = 0.2 on [-0.5, 0.5]: n particles whose "rho" and "p" follow the exact solution
 /// slightly smoothed, plus the exact curves of both sampled at 801 points.

@@ -58,6 +58,7 @@ struct LiquidParams {
   double c0 = 1414.2135623730951;  ///< sound speed at rho0 [m/s]; B = rho0 c0^2 / gamma
   double gamma = 7.0;    ///< Tait exponent (7 for water) [dimensionless]; not the gas gamma
   double p0 = 0.0;       ///< background pressure added to P [Pa]
+  double p_min = -1e300; ///< floor of P [Pa]: a liquid cannot sustain much tension (cavitation near -1 atm)
   bool operator==(const LiquidParams&) const = default;
 };
 

@@ -192,6 +192,10 @@ std::vector<ParamInfo> build() {
                    [](Params& p) -> double& { return p.liquid.gamma; }, 1.0, 20.0));
   t.push_back(real({"liquid.p0", "pressure", "background pressure added to the Tait pressure", "", kTait, true},
                    [](Params& p) -> double& { return p.liquid.p0; }, -1e12, 1e12));
+  t.push_back(real({"liquid.p_min", "pressure",
+                    "floor of the Tait pressure: no more tension than this (water cavitates near -1e5 Pa gauge)", "",
+                    kTait, true},
+                   [](Params& p) -> double& { return p.liquid.p_min; }, -1e300, 1e12));
   t.push_back(real({"visc.alpha", "dimensionless", "artificial viscosity, linear term (seed 003 eq. 3.16; seed 001 eq. 41)",
                     "alpha", kMonaghan, true},
                    [](Params& p) -> double& { return p.visc.alpha; }, 0.0, 10.0));

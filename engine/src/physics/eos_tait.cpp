@@ -1,5 +1,7 @@
 // Tait/Cole equation of state for a weakly compressible liquid (seed 001 eq. 3; see sph/eos.h), with
 // the elastic energy sum m e(rho) as its internal energy.
+#include <algorithm>
+
 #include "core/parallel.h"
 #include "core/stages.h"
 #include "sph/eos.h"
@@ -22,7 +24,7 @@ class EosTait final : public Stage {
     const LiquidParams& l = c.prm.liquid;
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
     for (std::size_t i = 0; i < n; ++i) {
-      P[i] = eos::tait_pressure(rho[i], l);
+      P[i] = std::max(l.p_min, eos::tait_pressure(rho[i], l));
       cs[i] = eos::tait_sound_speed(rho[i], l);
     }
     return true;

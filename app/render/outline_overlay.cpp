@@ -1,0 +1,76 @@
+#include "outline_overlay.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include "legend.h"
+#include "palette.h"
+#include "sph/snapshot.h"
+
+namespace sph::render {
+
+namespace {
+
+constexpr std::size_t kColours = std::size(palette::kOutlines);
+
+// One outline in frame pixels (x0, y0, x1, y1, ...; NaN breaks the line) and its colour.
+struct PixelOutline {
+  std::vector<float> xy;
+  Rgba color;
+};
+
+}  // namespace
+
+float outline_width(int s) { return 0.75f * static_cast<float>(s) + 0.5f; }  // as thin as the exact curves
+
+void add_outlines(FrameBuild& f, const sph::Snapshot& snap) {
+  if (snap.outlines.empty()) return;
+  const FrameLayout& L = f.layout;
+  const float w = outline_width(L.text_scale);
+  // Distinct labels in order of appearance: each gets the next palette colour and a legend row.
+  std::vector<std::string> labels;
+  auto colour_of = [&](const std::string& label) {
+    auto it = std::find(labels.begin(), labels.end(), label);
+    if (it == labels.end()) it = labels.insert(labels.end(), label);
+    return palette::kOutlines[static_cast<std::size_t>(it - labels.begin()) % kColours];
+  };
+
+  std::vector<PixelOutline> lines;
+  lines.reserve(snap.outlines.size());
+  for (const sph::Outline& o : snap.outlines) {
+    const std::size_t n = std::min(o.x.size(), o.y.size());
+    if (n == 0) continue;
+    PixelOutline p{{}, colour_of(o.label)};
+    p.xy.reserve(2 * n);
+    for (std::size_t i = 0; i < n; ++i) {
+      float px = NAN, py = NAN;
+      if (!std::isfinite(o.x[i]) || !std::isfinite(o.y[i]) || !L.to_pixel(o.x[i], o.y[i], 0.f, &px, &py))
+        px = py = NAN;
+      p.xy.push_back(px);
+      p.xy.push_back(py);
+    }
+    lines.push_back(std::move(p));
+  }
+  // All rims before all lines, so that no rim covers a neighbouring segment's line at a joint.
+  for (int layer = 0; layer < 2; ++layer) {
+    const float lw = layer == 0 ? w + 2.f : w;
+    for (const PixelOutline& p : lines) {
+      const Rgba c = layer == 0 ? palette::kOutlineHalo : p.color;
+      if (p.xy.size() == 2) {  // one vertex: a dot
+        if (std::isfinite(p.xy[0]) && std::isfinite(p.xy[1])) f.clipped.disc(p.xy[0], p.xy[1], 0.5f * lw + 0.5f, c);
+      } else {
+        f.clipped.polyline(p.xy, lw, c);
+      }
+    }
+  }
+
+  std::vector<LegendEntry> rows;
+  for (std::size_t k = 0; k < labels.size() && k < kColours; ++k)
+    if (!labels[k].empty()) rows.push_back({labels[k], false, palette::kOutlines[k], w, palette::kOutlineHalo});
+  add_legend(f, L.plot, rows);
+}
+
+}  // namespace sph::render
