@@ -19,33 +19,15 @@ namespace {
 
 constexpr double kG = 9.81;
 
-/// Physics and parameters shared by the dam breaks; c0 from the column height H.
+/// The dam breaks' physics: gravity, dummy walls, c0 = 10 sqrt(2 g H) for a column of height H.
 Params liquid_defaults(double H) {
-  Params d;
-  d.physics.density = DensityMode::Continuity;
-  d.physics.smoothing = HMode::Fixed;
-  d.physics.eos = EosType::Tait;
-  d.physics.force = ForceType::StandardCorrected;
-  d.physics.viscosity = ViscType::Monaghan;
-  d.physics.xsph = Toggle::Off;
-  d.physics.energy = Toggle::Off;
+  Params d = liquid_params(10.0 * std::sqrt(2.0 * kG * H), 0.1);
   d.physics.body_force = BodyForce::Uniform;
   d.physics.walls = WallType::Dummy;
-  d.liquid.rho0 = 1000.0;
-  d.liquid.gamma = 7.0;
-  d.liquid.c0 = 10.0 * std::sqrt(2.0 * kG * H);
-  d.density.diffusion = 0.1;
-  d.liquid.p_min = 0.0;  // no tension: negative pressures at fronts and tips broke the corrected forms up
-  d.visc.alpha = 0.1;  // seed 001: alpha ~ 0.01-0.1, beta = 0
-  d.visc.beta = 0.0;
   d.body.gx = 0.0;
   d.body.gy = -kG;
-  d.walls.p1 = 4.0;
+  d.walls.p1 = 4.0;  // seed 001 §7.2
   d.walls.p2 = 2.0;
-  d.kernel.type = KernelType::M4;
-  d.kernel.eta = 1.3;
-  d.time.integrator = IntegratorType::PredictorCorrector;
-  d.time.cfl = 0.3;
   return d;
 }
 

@@ -11,6 +11,7 @@
 
 #include "families.h"
 #include "reference/drop_reference.h"
+#include "liquid_tank.h"
 #include "scene_util.h"
 #include "sph/eos.h"
 
@@ -66,27 +67,7 @@ SceneSpec elliptical_drop_scene() {
   s.description = "seed 001 §7.1: water circle with v = (-100x, 100y) becomes an ellipse; ODE semi-axes as reference";
   s.dim = 2;
   Params& d = s.defaults;
-  d.physics.density = DensityMode::Continuity;
-  d.physics.smoothing = HMode::Fixed;
-  d.physics.eos = EosType::Tait;
-  d.physics.force = ForceType::StandardCorrected;
-  d.physics.viscosity = ViscType::Monaghan;
-  d.physics.xsph = Toggle::Off;  // seed 001 §5.3: standard-corrected runs without XSPH
-  d.physics.energy = Toggle::Off;
-  d.liquid.rho0 = 1000.0;
-  d.liquid.gamma = 7.0;
-  d.liquid.c0 = std::sqrt(7.0 * 285.714e6 / 1000.0);  // seed 001: k = 285.714 MN/m^2 is B
-  d.visc.alpha = 0.03;  // seed 001: alpha ~ 0.01-0.1, beta = 0 for liquids
-  d.visc.beta = 0.0;
-  d.kernel.type = KernelType::M4;  // seed 001 eq. 14
-  d.kernel.eta = 1.3;  // h = 1.3 dx, ~21 neighbours (PySPH's choice for this test)
-  // delta-SPH density diffusion: without it the corrected formulations break up by tensile instability
-  // (at alpha = 0.03: t = 6.7 ms with h = 1.5 dx, 9.3 ms with h = 1.6 dx; at h = 1.3 dx only alpha >= 0.1
-  // survived, which holds the major axis 1.1% short at 7.6 ms).
-  d.density.diffusion = 0.1;
-  d.liquid.p_min = 0.0;  // no tension: negative pressures at fronts and tips broke the corrected forms up
-  d.time.integrator = IntegratorType::PredictorCorrector;  // seed 001 eqs. 56-59
-  d.time.cfl = 0.3;
+  d = liquid_params(std::sqrt(7.0 * 285.714e6 / 1000.0), 0.03);  // seed 001: k = 285.714 MN/m^2 is B
   d.time.t_end = 0.0076;
   d.time.dt_out = 0.0004;
   s.allow(Slot::Eos, {"tait"});

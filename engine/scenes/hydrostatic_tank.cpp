@@ -20,26 +20,11 @@ SceneSpec hydrostatic_tank_scene() {
               {"depth", 1.0, 0.01, 100.0, false, "water depth H [m]"},
               {"dx", 0.025, 1e-4, 1.0, false, "particle spacing [m]"}};
   Params& d = s.defaults;
-  d.physics.density = DensityMode::Continuity;
-  d.physics.smoothing = HMode::Fixed;
-  d.physics.eos = EosType::Tait;
-  d.physics.force = ForceType::StandardCorrected;
-  d.physics.viscosity = ViscType::Monaghan;
-  d.physics.energy = Toggle::Off;
+  d = liquid_params(10.0 * std::sqrt(2.0 * 9.81 * 1.0), 0.1);
   d.physics.body_force = BodyForce::Uniform;
   d.physics.walls = WallType::Dummy;
-  d.liquid.rho0 = 1000.0;
-  d.liquid.gamma = 7.0;
-  d.liquid.c0 = 10.0 * std::sqrt(2.0 * 9.81 * 1.0);
-  d.density.diffusion = 0.1;
-  d.liquid.p_min = 0.0;  // no tension: negative pressures at fronts and tips broke the corrected forms up
-  d.visc.alpha = 0.1;
-  d.visc.beta = 0.0;
   d.body.gx = 0.0;
   d.body.gy = -9.81;
-  d.kernel.type = KernelType::M4;
-  d.kernel.eta = 1.3;
-  d.time.integrator = IntegratorType::PredictorCorrector;
   d.time.t_end = 1.0;
   d.time.dt_out = 0.1;
   s.allow(Slot::Eos, {"tait"});

@@ -34,6 +34,12 @@ int dummy_layers(const Params& prm, int dim);
 /// g > 0, else rho0; mass rho dx^2), then walls (rho0, mass rho0 dx^2), every h = eta dx.
 Particles make_liquid(const Params& prm, const LiquidLayout& layout, double dx, double surface, double g);
 
+/// The physics every liquid scene starts from: continuity density with delta-SPH diffusion (delta =
+/// 0.1), fixed h = 1.3 dx with the M4 kernel, Tait EOS for water (rho0 = 1000, gamma = 7) with sound speed
+/// c0 and no tension, standard-corrected forces with Monaghan's Pi (alpha, beta = 0), the seed-001
+/// predictor-corrector; no body force, no walls, no XSPH, no energy equation.
+Params liquid_params(double c0, double alpha);
+
 /// Lennard-Jones strength of seed 001 §7.2: D = 5 g H.
 inline double lj_strength(double g, double H) { return 5.0 * g * H; }
 

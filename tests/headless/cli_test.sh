@@ -32,6 +32,19 @@ for t in 1 2; do
   check "box_random --threads $t" 0 $?
 done
 ok "1 and 2 threads: identical particle files" cmp -s "$work/threads1/particles_00002.csv" "$work/threads2/particles_00002.csv"
+# a liquid scene with walls: its own columns (no u), the kind of each particle, its reference's columns
+"$sph" run hydrostatic_tank --set scene.dx=0.1 --until 0.02 --set dt_out=0.01 --out "$work/tank" > /dev/null
+check "run hydrostatic_tank" 0 $?
+ok "liquid particle header" grep -q "^id,x,y,z,vx,vy,vz,m,rho,p,h,kind$" "$work/tank/particles_00002.csv"
+ok "liquid errors header" grep -q "^t,p_mid,p_mid_exact,err_mid,L1_p_rel$" "$work/tank/errors.csv"
+ok "wall particles are marked" grep -q ",1$" "$work/tank/particles_00002.csv"
+# scene.json lists only the parameters of the stages the scene runs
+"$sph" run box_lattice --until 0 --out "$work/lat" > /dev/null; check "run box_lattice" 0 $?
+ok "no viscosity keys without a viscosity stage" test -z "$(grep 'visc\.' "$work/lat/scene.json")"
+ok "gas keys for a gas" grep -q '"gas.gamma"' "$work/lat/scene.json"
+ok "no gas keys for a liquid" test -z "$(grep '"gas\.' "$work/tank/scene.json")"
+ok "sod has its viscosity" grep -q '"visc.alpha"' "$work/sod/scene.json"
+
 # every shipped scene file is valid
 for f in "$root"/assets/scenes/*.json; do "$sph" check "$f" > /dev/null; check "check $f" 0 $?; done
 
@@ -54,6 +67,12 @@ bad malformed_file 3 "m.json" run "$work/m.json"
 echo '{"scene": "sod", "extra": 1}' > "$work/e.json"
 bad unknown_top_key 3 "extra" run "$work/e.json"
 bad bad_threads 2 "threads" run sod --threads 0
+bad no_viscosity_stage 3 "physics.viscosity = none" run box_lattice --set alpha=5
+bad inactive_new_key 3 "visc.alpha" run box_lattice --set visc.alpha=5
+bad liquid_key_on_gas 3 "liquid.c0" run sod --set liquid.c0=10
+bad slot_not_for_scene 3 "physics.eos" run sod --set physics.eos=tait
+bad nonsense_combination 3 "physics.energy" run box_lattice --set physics.eos=isothermal
+bad negative_until 2 "until" run sod --until -3
 
 # I/O error
 "$sph" run sod --set scene.n_left=50 --until 0.01 --out /proc/sph-cannot-write 2> "$work/io.err" > /dev/null

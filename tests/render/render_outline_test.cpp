@@ -26,10 +26,10 @@ class RenderOutline : public OffscreenTest {
     EXPECT_TRUE(layout().to_pixel(wx, wy, 0.f, &px, &py));
     return colour_near(rgba, kWidth, kHeight, px, py, to_pixel8(c), 1, tol);
   }
-  // Where the legend goes: the top-right corner of the plot.
+  // Where the legend goes: the top-right corner of the plot (above the circle).
   PixelRect legend_zone() const {
     const PixelRect& p = layout().plot;
-    return {p.right() - 0.45f * p.w, p.y, 0.45f * p.w, 0.25f * p.h};
+    return {p.right() - 0.45f * p.w, p.y, 0.45f * p.w, 0.15f * p.h};
   }
 };
 

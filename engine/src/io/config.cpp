@@ -115,10 +115,16 @@ void RunConfig::validate() const {
   try {
     check_physics(*scene, params.physics);
   } catch (const ConfigError& e) {
+    // name where the first slot the message mentions was set (a file or a --set), if it was
+    const std::string msg = e.what();
     std::string where;
-    for (const auto& [key, origin] : explicit_keys)
-      if (key.starts_with("physics.")) { where = origin + ": "; break; }
-    throw ConfigError(where + e.what());
+    std::size_t first = std::string::npos;
+    for (const auto& [key, origin] : explicit_keys) {
+      if (!key.starts_with("physics.")) continue;
+      const std::size_t at = msg.find(key + " =");
+      if (at != std::string::npos && at < first) { first = at; where = origin + ": "; }
+    }
+    throw ConfigError(where + msg);
   }
   for (const auto& [key, origin] : explicit_keys) {
     const ParamInfo* info = find_param(key);
