@@ -70,7 +70,8 @@ void panel_diagnostics(GuiState& s) {
   const int n = 3 + (err_plot ? 1 : 0) + static_cast<int>(f->ref_series.size());
   const float text_h = ImGui::GetTextLineHeightWithSpacing();
   const float avail = ImGui::GetContentRegionAvail().y - text_h;
-  const float ph = std::max(24.f, avail / n - ImGui::GetStyle().ItemSpacing.y);
+  // readable plots even when a reference brings several (the column scrolls)
+  const float ph = std::max(3.5f * text_h, avail / n - ImGui::GetStyle().ItemSpacing.y);
   for (const auto& [measured, exact] : f->ref_series) {  // e.g. the drop's semi-axes against the exact ODE
     if (static_cast<std::size_t>(std::max(measured, exact)) >= f->ref_columns.size()) continue;
     std::vector<Curve> curves;

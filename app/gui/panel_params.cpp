@@ -16,6 +16,7 @@ namespace {
 const char* group_title(std::string_view g) {
   if (g == "physics") return "physics: the stages of the step";
   if (g == "kernel") return "kernel";
+  if (g == "density") return "density (continuity)";
   if (g == "h") return "smoothing length solve";
   if (g == "time") return "time integration";
   if (g == "gas") return "gas";

@@ -34,7 +34,7 @@ class WallsDummy final : public Stage {
     const bool body = c.prm.physics.body_force == BodyForce::Uniform;
     const double g[3] = {body ? c.prm.body.gx : 0.0, body ? c.prm.body.gy : 0.0, body ? c.prm.body.gz : 0.0};
     const double support = K.support();
-#pragma omp parallel for schedule(dynamic, 64) if (end - begin >= kParallelMin)
+#pragma omp parallel for schedule(dynamic, 64) if (end >= kParallelMin)  // the scene's size decides
     for (std::size_t w = begin; w < end; ++w) {
       const double hw = h[w], R2 = support * support * hw * hw;
       double num = 0.0, den = 0.0;

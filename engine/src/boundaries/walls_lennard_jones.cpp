@@ -26,7 +26,7 @@ class WallsLennardJones final : public Stage {
     Particles& p = c.p;
     const std::size_t n = p.fluid();
     const LjConstants lj = constants(c);
-#pragma omp parallel for schedule(dynamic, 64) if (n >= kParallelMin)
+#pragma omp parallel for schedule(dynamic, 64) if (p.size() >= kParallelMin)
     for (std::size_t i = 0; i < n; ++i) {
       double f[3] = {0.0, 0.0, 0.0};
       for (std::uint32_t j : c.nl.of(i)) {

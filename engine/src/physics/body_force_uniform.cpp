@@ -15,7 +15,7 @@ class BodyForceUniform final : public Stage {
     const double g[3] = {c.prm.body.gx, c.prm.body.gy, c.prm.body.gz};
     for (int k = 0; k < p.dim(); ++k) {
       auto& a = p.a[k];
-#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+#pragma omp parallel for schedule(static) if (p.size() >= kParallelMin)
       for (std::size_t i = 0; i < n; ++i) a[i] += g[k];
     }
     return true;

@@ -13,7 +13,7 @@ inline double courant_limit(const Particles& p) {
   const auto& h = p[Field::H];
   const auto& vs = p[Field::SignalSpeed];
   double dt = Stage::kNoLimit;
-#pragma omp parallel for reduction(min : dt) if (n >= kParallelMin)
+#pragma omp parallel for reduction(min : dt) if (p.size() >= kParallelMin)
   for (std::size_t i = 0; i < n; ++i)
     if (vs[i] > 0.0) dt = std::min(dt, h[i] / vs[i]);
   return dt;

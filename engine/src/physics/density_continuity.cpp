@@ -39,7 +39,7 @@ class DensityContinuity final : public Stage {
     std::vector<double> fresh(n);
     const auto& rho = p[Field::Density];
     const bool skip_walls = !c.walls_in_sums();
-#pragma omp parallel if (n >= kParallelMin)
+#pragma omp parallel if (p.size() >= kParallelMin)
     {
       std::vector<double> w;
 #pragma omp for schedule(dynamic, 64)
@@ -97,7 +97,7 @@ class DensityContinuity final : public Stage {
     const double support = K.support();
     const double delta_c0 = 2.0 * c.prm.density.diffusion * c.prm.liquid.c0;  // times h_a below
     double sum_nb = 0.0;
-#pragma omp parallel for schedule(dynamic, 64) reduction(+ : sum_nb) if (n >= kParallelMin)
+#pragma omp parallel for schedule(dynamic, 64) reduction(+ : sum_nb) if (p.size() >= kParallelMin)
     for (std::size_t i = 0; i < n; ++i) {
       const double hi = h[i], R2 = support * support * hi * hi;
       const Kernel::Scale si = K.scale(hi);

@@ -76,7 +76,7 @@ class DensitySummation final : public Stage {
     int overflow = 0;
     std::size_t bisections = 0;
 
-#pragma omp parallel for schedule(dynamic, 64) reduction(+ : overflow, bisections) if (n >= kParallelMin)
+#pragma omp parallel for schedule(dynamic, 64) reduction(+ : overflow, bisections) if (p.size() >= kParallelMin)
     for (std::size_t i = 0; i < n; ++i) {
       const auto nb = c.nl.of(i);
       Sums s;
@@ -118,7 +118,7 @@ class DensitySummation final : public Stage {
     DensityStats& stats = c.stats.density;
     stats = DensityStats{};
     stats.bisections = bisections;
-#pragma omp parallel for reduction(+ : sum_it, sum_nb, not_converged) reduction(max : max_it) if (n >= kParallelMin)
+#pragma omp parallel for reduction(+ : sum_it, sum_nb, not_converged) reduction(max : max_it) if (p.size() >= kParallelMin)
     for (std::size_t i = 0; i < n; ++i) {
       int it = static_cast<int>(hiter[i]);
       if (it >= 1000) { ++not_converged; it -= 1000; hiter[i] = it; }

@@ -22,7 +22,7 @@ class BarotropicEos final : public Stage {
     auto& P = p[Field::Pressure];
     auto& cs = p[Field::SoundSpeed];
     const Model model(c.prm);
-#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+#pragma omp parallel for schedule(static) if (p.size() >= kParallelMin)
     for (std::size_t i = 0; i < n; ++i) {
       P[i] = model.pressure(rho[i]);
       cs[i] = model.sound_speed(rho[i]);

@@ -22,7 +22,7 @@ class EosIdealGas final : public Stage {
     auto& P = p[Field::Pressure];
     auto& cs = p[Field::SoundSpeed];
     const double g = c.prm.gas.gamma;
-#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+#pragma omp parallel for schedule(static) if (p.size() >= kParallelMin)
     for (std::size_t i = 0; i < n; ++i) {
       P[i] = (g - 1.0) * rho[i] * u[i];
       cs[i] = std::sqrt(g * P[i] / rho[i]);

@@ -51,7 +51,7 @@ void standard_loop(StageContext& c) {
   const double delta_c0 = 2.0 * prm.density.diffusion * prm.liquid.c0;  // times h_a below
   double sum_nb = 0.0;
 
-#pragma omp parallel for schedule(dynamic, 64) reduction(+ : sum_nb) if (n >= kParallelMin)
+#pragma omp parallel for schedule(dynamic, 64) reduction(+ : sum_nb) if (p.size() >= kParallelMin)
   for (std::size_t i = 0; i < n; ++i) {
     const double xi = p.x[0][i], yi = p.x[1][i], zi = p.x[2][i];
     const double vxi = p.v[0][i], vyi = p.v[1][i], vzi = p.v[2][i];

@@ -39,6 +39,7 @@ void standard_corrected_loop(StageContext& c, std::vector<double>& pr2, std::vec
   const std::size_t total = p.total();
   pr2.resize(total);
   vol.resize(total);
+#pragma omp parallel for schedule(static) if (p.size() >= kParallelMin)
   for (std::size_t j = 0; j < total; ++j) {
     pr2[j] = P[j] / (rho[j] * rho[j]);
     vol[j] = m[j] / rho[j];
@@ -55,7 +56,7 @@ void standard_corrected_loop(StageContext& c, std::vector<double>& pr2, std::vec
   const double alpha_scale = V == ViscType::Monaghan ? std::max(1.0, alpha) : 1.0;
   const double beta_scale = V == ViscType::Monaghan ? std::max(1.0, 0.5 * beta) : 1.0;
   const double support = K.support();
-#pragma omp parallel for schedule(dynamic, 64) reduction(+ : sum_nb) if (n >= kParallelMin)
+#pragma omp parallel for schedule(dynamic, 64) reduction(+ : sum_nb) if (p.size() >= kParallelMin)
   for (std::size_t i = 0; i < n; ++i) {
     const double hi = h[i], Ri2 = support * support * hi * hi;
     const Kernel::Scale si = K.scale(hi);

@@ -39,8 +39,9 @@ std::size_t correct(StageContext& c, std::vector<double>& vol) {
   const double min_rcond = c.prm.correction.min_rcond;
   std::size_t fallbacks = 0;
   vol.resize(p.total());  // V = m / rho of every particle, ghosts included: one division each
+#pragma omp parallel for schedule(static) if (p.size() >= kParallelMin)
   for (std::size_t j = 0; j < vol.size(); ++j) vol[j] = m[j] / rho[j];
-#pragma omp parallel for schedule(dynamic, 64) reduction(+ : fallbacks) if (n >= kParallelMin)
+#pragma omp parallel for schedule(dynamic, 64) reduction(+ : fallbacks) if (p.size() >= kParallelMin)
   for (std::size_t i = 0; i < n; ++i) {
     const double hi = h[i], R2 = support * support * hi * hi;
     const Kernel::Scale si = K.scale(hi);

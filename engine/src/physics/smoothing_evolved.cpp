@@ -24,7 +24,7 @@ class SmoothingEvolved final : public Stage {
     auto& h = p[Field::H];
     const double inv_d = 1.0 / dim_, eta = c.eta;
     int outgrown = 0;
-#pragma omp parallel for schedule(static) reduction(+ : outgrown) if (n >= kParallelMin)
+#pragma omp parallel for schedule(static) reduction(+ : outgrown) if (p.size() >= kParallelMin)
     for (std::size_t i = 0; i < n; ++i) {
       h[i] = eta * std::pow(m[i] / rho[i], inv_d);
       if (h[i] > c.h_limit[i]) ++outgrown;  // the list no longer covers h: rebuild it

@@ -19,7 +19,7 @@ class ViscosityLaplacian final : public Stage {
     const std::size_t n = c.p.fluid();
     const auto& h = c.p[Field::H];
     double hmin = kNoLimit;
-#pragma omp parallel for reduction(min : hmin) if (n >= kParallelMin)
+#pragma omp parallel for reduction(min : hmin) if (c.p.size() >= kParallelMin)
     for (std::size_t i = 0; i < n; ++i) hmin = std::min(hmin, h[i]);
     return 0.125 * hmin * hmin / nu;
   }
