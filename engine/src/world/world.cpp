@@ -105,6 +105,10 @@ void World::set_params(const Params& p) {
   if (p.time.integrator != old.time.integrator) integrator_ = make_integrator(p.time.integrator);
   current_ = false;  // rates depend on the parameters: re-evaluate before the next step
   rates_known_ = false;
+  // new parameters may change dt and the energies legitimately (e.g. gravity switched on): the blow-up
+  // guards measure from the next step on
+  dt_first_ = 0.0;
+  energy_scale_ = -1.0;
 }
 
 void World::prepare_neighbours() {
@@ -208,7 +212,7 @@ void World::check_energy() {
   // Every stage conserves or dissipates E_kin + E_int + E_pot (the corrected forms to truncation error),
   // so a total energy that grows by many times its initial scale is a blow-up that has not (yet) reached
   // inf or NaN. Checked every 16 steps (the potentials cost a pass over the neighbours).
-  if (step_ % 16 != 0 && step_ > 1) return;
+  if (step_ % 16 != 0 && energy_scale_ >= 0.0) return;
   const Diagnostics d = diagnostics();
   if (energy_scale_ < 0.0) {
     energy_scale_ = std::abs(d.E_kin) + std::abs(d.E_int) + std::abs(d.E_pot);
