@@ -1,5 +1,5 @@
 // What the particle view shows: colour by one of the snapshot's fields (only the fields the scene's
-// modules allocate), the colour map, an automatic or fixed range, in 2D the plane or a profile against
+// stages allocate), the colour map, an automatic or fixed range, in 2D the plane or a profile against
 // x or y, particle size, walls and reference outlines shown or hidden, and the camera.
 #include <imgui.h>
 
@@ -68,7 +68,7 @@ void panel_display(GuiState& s) {
     ImGui::EndCombo();
   }
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("Fields this scene's physics modules allocate (profiles: also the y axis).\n"
+    ImGui::SetTooltip("Fields this scene's physics stages allocate (profiles: also the y axis).\n"
                       "The automatic range is the fluid's: wall particles are always grey.");
   if (ImGui::BeginCombo("colour map", v.cmap.c_str())) {
     for (std::string_view name : render::colormap_names())

@@ -12,6 +12,7 @@
 
 #include "core/parallel.h"
 #include "core/stages.h"
+#include "continuity_output.h"
 #include "corrected_kernel.h"
 #include "pair_terms.h"
 #include "sph/kernel_correction.h"
@@ -80,8 +81,7 @@ class DensityContinuity final : public Stage {
     const double* m = p[Field::Mass].data();
     const double* rho = p[Field::Density].data();
     const double* h = p[Field::H].data();
-    double* rate = p[Field::DensityRate].data();
-    double* nneigh = p[Field::Neighbours].data();
+    const ContinuityOutput out(p, c.prm);
     const std::uint8_t* kind = p.kind.data();
     const bool skip_walls = !c.walls_in_sums();
     const double* x[D];
@@ -95,7 +95,6 @@ class DensityContinuity final : public Stage {
     std::unique_ptr<CorrectionFields> corr;
     if constexpr (Corrected) corr = std::make_unique<CorrectionFields>(p);
     const double support = K.support();
-    const double delta_c0 = 2.0 * c.prm.density.diffusion * c.prm.liquid.c0;  // times h_a below
     double sum_nb = 0.0;
 #pragma omp parallel for schedule(dynamic, 64) reduction(+ : sum_nb) if (p.size() >= kParallelMin)
     for (std::size_t i = 0; i < n; ++i) {
@@ -133,12 +132,10 @@ class DensityContinuity final : public Stage {
         s += Vj * dot;
         diff += pair::density_diffusion(Vj, rho[i], rho[j], dW_r);
       }
-      rate[i] = rho[i] * s + delta_c0 * hi * diff;
-      nneigh[i] = count;
+      out.store(i, rho[i], hi, s, diff, count);
       sum_nb += count;
     }
-    c.stats.density = DensityStats{};
-    c.stats.density.mean_neighbours = n ? sum_nb / n : 0.0;
+    ContinuityOutput::finish(c, sum_nb, n);
   }
 
   bool corrected_, xsph_, fused_;

@@ -94,9 +94,7 @@ class ForcesCorrected final : public Stage {
         if (r2 >= R * R || r2 == 0.0) continue;
         const double rr = std::sqrt(r2), rinv = 1.0 / rr;
         double Wi, dWi, Wj, dWj;
-        K.eval(si, rr, Wi, dWi);
-        if (hj == hi) { Wj = Wi; dWj = dWi; }  // fixed h: the same kernel values
-        else K.eval(K.scale(hj), rr, Wj, dWj);
+        pair::kernels(K, si, hi, hj, rr, Wi, dWi, Wj, dWj);
         double Gi[3], Gj[3];
         corr.gradient(i, r, Wi, dWi * rinv, Gi);
         corr.gradient(j, mr, Wj, dWj * rinv, Gj);

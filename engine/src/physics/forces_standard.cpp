@@ -9,10 +9,12 @@
 // A gather over the neighbour list: each particle sums its own neighbours in list order.
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "core/parallel.h"
 #include "core/stages.h"
 #include "courant.h"
+#include "continuity_output.h"
 #include "pair_terms.h"
 
 namespace sph {
@@ -42,13 +44,12 @@ void standard_loop(StageContext& c) {
   const double support = K.support();
   const double alpha_scale = V == ViscType::Monaghan ? std::max(1.0, alpha) : 1.0;
   const double beta_scale = V == ViscType::Monaghan ? std::max(1.0, 0.5 * beta) : 1.0;
-  double* rate = Cont ? p[Field::DensityRate].data() : nullptr;
-  double* nneigh = Cont ? p[Field::Neighbours].data() : nullptr;
+  std::unique_ptr<ContinuityOutput> cont;
+  if constexpr (Cont) cont = std::make_unique<ContinuityOutput>(p, prm);
   const bool xsph = Cont && prm.physics.xsph == Toggle::On;
   const double* xs[3] = {nullptr, nullptr, nullptr};  // XSPH corrections v* - v
   if (xsph)
     for (int k = 0; k < 3; ++k) xs[k] = p[component(Field::XsphX, k)].data();
-  const double delta_c0 = 2.0 * prm.density.diffusion * prm.liquid.c0;  // times h_a below
   double sum_nb = 0.0;
 
 #pragma omp parallel for schedule(dynamic, 64) reduction(+ : sum_nb) if (p.size() >= kParallelMin)
@@ -126,15 +127,11 @@ void standard_loop(StageContext& c) {
     vsig[i] = vs;
     if constexpr (Energy) (*dudt)[i] = Ai * du + visc_heat + cond;
     if constexpr (Cont) {
-      rate[i] = rho[i] * drho + delta_c0 * hi * diff;
-      nneigh[i] = count;
+      cont->store(i, rho[i], hi, drho, diff, count);
       sum_nb += count;
     }
   }
-  if constexpr (Cont) {
-    c.stats.density = DensityStats{};
-    c.stats.density.mean_neighbours = n ? sum_nb / n : 0.0;
-  }
+  if constexpr (Cont) ContinuityOutput::finish(c, sum_nb, n);
 }
 
 template <bool GradH, ViscType V>

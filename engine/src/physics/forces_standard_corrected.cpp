@@ -6,11 +6,13 @@
 // the standard eq. 44 when L = I and S = 1. The Laplacian viscosity uses r . (G_a(b) - G_b(a))/2.
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "core/parallel.h"
 #include "core/stages.h"
 #include "corrected_kernel.h"
 #include "courant.h"
+#include "continuity_output.h"
 #include "pair_terms.h"
 
 namespace sph {
@@ -44,13 +46,12 @@ void standard_corrected_loop(StageContext& c, std::vector<double>& pr2, std::vec
     pr2[j] = P[j] / (rho[j] * rho[j]);
     vol[j] = m[j] / rho[j];
   }
-  double* rate = Cont ? p[Field::DensityRate].data() : nullptr;
-  double* nneigh = Cont ? p[Field::Neighbours].data() : nullptr;
+  std::unique_ptr<ContinuityOutput> cont;
+  if constexpr (Cont) cont = std::make_unique<ContinuityOutput>(p, prm);
   const double* dvx[D] = {};
   if constexpr (Xsph)
     for (int k = 0; k < D; ++k) dvx[k] = p[component(Field::XsphX, k)].data();
   double sum_nb = 0.0;
-  const double delta_c0 = 2.0 * prm.density.diffusion * prm.liquid.c0;  // times h_a below
   const bool skip_walls = !c.walls_in_sums();
   const double alpha = prm.visc.alpha, beta = prm.visc.beta, eps = prm.visc.eps, nu = prm.visc.nu;
   const double alpha_scale = V == ViscType::Monaghan ? std::max(1.0, alpha) : 1.0;
@@ -81,9 +82,7 @@ void standard_corrected_loop(StageContext& c, std::vector<double>& pr2, std::vec
       if (r2 >= R * R || r2 == 0.0) continue;
       const double rr = std::sqrt(r2), rinv = 1.0 / rr;
       double Wi, dWi, Wj, dWj;
-      K.eval(si, rr, Wi, dWi);
-      if (hj == hi) { Wj = Wi; dWj = dWi; }  // fixed h: the same kernel values
-      else K.eval(K.scale(hj), rr, Wj, dWj);
+      pair::kernels(K, si, hi, hj, rr, Wi, dWi, Wj, dWj);
       double Gi[D], Gj[D];
       corr.gradient_d<D>(i, r, Wi, dWi * rinv, Gi);
       corr.gradient_d<D>(j, mr, Wj, dWj * rinv, Gj);
@@ -118,15 +117,11 @@ void standard_corrected_loop(StageContext& c, std::vector<double>& pr2, std::vec
     for (int k = D; k < 3; ++k) p.a[k][i] = 0.0;
     vsig[i] = vs;
     if constexpr (Cont) {
-      rate[i] = rho[i] * drho + delta_c0 * hi * diff;
-      nneigh[i] = count;
+      cont->store(i, rho[i], hi, drho, diff, count);
       sum_nb += count;
     }
   }
-  if constexpr (Cont) {
-    c.stats.density = DensityStats{};
-    c.stats.density.mean_neighbours = n ? sum_nb / n : 0.0;
-  }
+  if constexpr (Cont) ContinuityOutput::finish(c, sum_nb, n);
 }
 
 template <int D, bool Cont, bool Xsph>

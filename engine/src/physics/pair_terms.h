@@ -3,7 +3,22 @@
 #pragma once
 #include <algorithm>
 
+#include "sph/kernel.h"
+
 namespace sph::pair {
+
+/// W and dW/dr at distance r for particle a's h (factors sa) and for b's h_b; with a fixed h (h_b = h_a)
+/// the second pair is the first, not evaluated again.
+inline void kernels(const Kernel& K, const Kernel::Scale& sa, double ha, double hb, double r, double& Wa,
+                    double& dWa, double& Wb, double& dWb) {
+  K.eval(sa, r, Wa, dWa);
+  if (hb == ha) {
+    Wb = Wa;
+    dWb = dWa;
+  } else {
+    K.eval(K.scale(hb), r, Wb, dWb);
+  }
+}
 
 /// Monaghan Pi_ab for an approaching pair (v_ab . r_ab < 0), 0 otherwise (seed 003 eq. 3.16; seed 001
 /// eqs. 41-43): mu = h_ab v_ab.r_ab / (r^2 + eps h_ab^2), Pi = (-alpha c_ab mu + beta mu^2) / rho_ab.
