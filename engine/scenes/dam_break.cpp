@@ -19,14 +19,10 @@ namespace {
 
 constexpr double kG = 9.81;
 
-/// The dam breaks' physics: gravity, dummy walls, c0 = 10 sqrt(2 g H) for a column of height H.
+/// The dam breaks' physics: tank_params with seed 001 §7.2's Lennard-Jones exponents (when chosen).
 Params liquid_defaults(double H) {
-  Params d = liquid_params(10.0 * std::sqrt(2.0 * kG * H), 0.1);
-  d.physics.body_force = BodyForce::Uniform;
-  d.physics.walls = WallType::Dummy;
-  d.body.gx = 0.0;
-  d.body.gy = -kG;
-  d.walls.p1 = 4.0;  // seed 001 §7.2
+  Params d = tank_params(H, 0.1);
+  d.walls.p1 = 4.0;
   d.walls.p2 = 2.0;
   return d;
 }

@@ -20,11 +20,7 @@ SceneSpec hydrostatic_tank_scene() {
               {"depth", 1.0, 0.01, 100.0, false, "water depth H [m]"},
               {"dx", 0.025, 1e-4, 1.0, false, "particle spacing [m]"}};
   Params& d = s.defaults;
-  d = liquid_params(10.0 * std::sqrt(2.0 * 9.81 * 1.0), 0.1);
-  d.physics.body_force = BodyForce::Uniform;
-  d.physics.walls = WallType::Dummy;
-  d.body.gx = 0.0;
-  d.body.gy = -9.81;
+  d = tank_params(1.0, 0.1);
   d.time.t_end = 1.0;
   d.time.dt_out = 0.1;
   s.allow(Slot::Eos, {"tait"});

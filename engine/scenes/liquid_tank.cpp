@@ -71,6 +71,16 @@ Params liquid_params(double c0, double alpha) {
   return d;
 }
 
+Params tank_params(double H, double alpha) {
+  constexpr double g = 9.81;
+  Params d = liquid_params(10.0 * std::sqrt(2.0 * g * H), alpha);
+  d.physics.body_force = BodyForce::Uniform;
+  d.physics.walls = WallType::Dummy;
+  d.body.gx = 0.0;
+  d.body.gy = -g;
+  return d;
+}
+
 int dummy_layers(const Params& prm, int dim) {
   const Kernel k(prm.kernel.type, dim);
   return static_cast<int>(std::ceil(k.support() * effective_eta(prm, dim) - 1e-9));

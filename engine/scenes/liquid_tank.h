@@ -40,6 +40,10 @@ Particles make_liquid(const Params& prm, const LiquidLayout& layout, double dx, 
 /// predictor-corrector; no body force, no walls, no XSPH, no energy equation.
 Params liquid_params(double c0, double alpha);
 
+/// liquid_params for water of depth H in a tank under gravity g = 9.81 m/s^2: c0 = 10 sqrt(2 g H) (Mach
+/// ~ 0.1 at the free-fall speed), uniform body force, dummy walls.
+Params tank_params(double H, double alpha);
+
 /// Lennard-Jones strength of seed 001 §7.2: D = 5 g H.
 inline double lj_strength(double g, double H) { return 5.0 * g * H; }
 
