@@ -55,7 +55,7 @@ void RunOutput::write_particles(const World& world) {
   f << (walls ? ",kind\n" : "\n");
   std::string line;
   char num[32];
-  for (std::size_t i = 0; i < p.size(); ++i) {
+  for (const std::uint32_t i : world.by_id()) {  // rows in id order, whatever the storage order
     line = std::to_string(p.id[i]);
     auto put = [&](double v) {
       std::snprintf(num, sizeof num, ",%.15g", v);

@@ -5,6 +5,7 @@
 #pragma once
 #include <array>
 #include <functional>
+#include <span>
 #include <memory>
 #include <vector>
 
@@ -41,6 +42,9 @@ class Integrator {
   virtual bool step(PhaseSpace& s, const Evaluate& eval, double dt, bool current) = 0;
   /// Drops internal history (after a reset, a change of particle count or of the evolved set).
   virtual void reset() {}
+  /// The particles were reordered (slot k now holds the particle that was at order[k]): history kept
+  /// per particle between steps must follow them.
+  virtual void permute(std::span<const std::uint32_t> order) { (void)order; }
 };
 
 std::unique_ptr<Integrator> make_integrator(IntegratorType type);

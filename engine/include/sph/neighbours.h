@@ -29,6 +29,10 @@ struct NeighbourList {
 /// particles (ghosts included).
 void build_neighbours(const Particles& p, const std::vector<double>& h, double radius, NeighbourList& out);
 
+/// The lists after the real particles were reordered (slot k holds the particle that was at order[k];
+/// ghosts, at index >= order.size(), stay): the same pairs, renumbered, each list in its old order.
+void permute_neighbours(NeighbourList& nl, std::span<const std::uint32_t> order);
+
 /// Same result by brute force, O(N^2): the reference the tests compare against.
 void build_neighbours_brute(const Particles& p, const std::vector<double>& h, double radius, NeighbourList& out);
 

@@ -4,6 +4,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "sph/fields.h"
@@ -42,6 +43,10 @@ class Particles {
   /// Reorders the real particles so the fluid comes first and walls last (stable: ids keep their
   /// order within each kind); drops the ghosts. Called once when a scene is built.
   void partition_by_kind();
+  /// Reorders the real particles: slot k gets the particle that was at order[k] (every field, id and
+  /// kind move with it); ghosts keep their state and follow their sources. `order` must keep the fluid
+  /// before the walls.
+  void permute(std::span<const std::uint32_t> order);
 
   std::array<std::vector<double>, 3> x;  ///< position [length]; unused components stay 0
   std::array<std::vector<double>, 3> v;  ///< velocity [length/time]

@@ -21,6 +21,14 @@ class Pipeline;
 struct EvalStats;
 struct StageContext;
 
+/// Wall time spent in one part of the evaluation since the world was built (or the pipeline changed):
+/// "neighbours" (ghosts and lists), then each stage by name. For benchmarks and the GUI's cost view.
+struct StageTiming {
+  std::string name;
+  double seconds = 0.0;
+  std::int64_t calls = 0;
+};
+
 /// A NaN or inf appeared in the state: which particle (id), which field, at which step.
 struct DivergedError : std::runtime_error {
   DivergedError(std::int64_t particle, std::int64_t step, double t, const std::string& field);
@@ -55,7 +63,11 @@ class World {
   double time() const { return t_; }
   std::int64_t steps() const { return step_; }
   double last_dt() const { return dt_last_; }
+  /// The particles, in the engine's storage order (spatially sorted: it changes every few steps).
   const Particles& particles() const { return p_; }
+  /// Storage indices of the real particles in increasing id: outputs list particles in this order, so
+  /// a particle keeps its row whatever the storage order.
+  const std::vector<std::uint32_t>& by_id() const { return by_id_; }
   const Domain& domain() const { return domain_; }
   const Kernel& kernel() const { return kernel_; }
   double eta() const;  ///< effective eta (the kernel's default if kernel.eta == 0)
@@ -65,6 +77,10 @@ class World {
   std::int64_t evaluations() const { return evaluations_; }
   /// Names of the stages that run, in pipeline order.
   std::vector<std::string> stage_names() const;
+  /// Time per part of the evaluation: [0] is the neighbour search, then the stages in pipeline order.
+  const std::vector<StageTiming>& timings() const { return timings_; }
+  /// Candidate pairs in the current neighbour lists (self included).
+  std::size_t neighbour_pairs() const;
 
   Diagnostics diagnostics() const;
   bool has_reference() const { return reference_ != nullptr; }
@@ -86,6 +102,9 @@ class World {
   void prepare_neighbours();
   /// Stage actions due after a completed step (e.g. density re-initialisation).
   void after_step();
+  void reset_timings();
+  /// Permutes the particle arrays into Morton order (the fluid; walls once) and updates by_id().
+  void reorder();
   void check_finite() const;
   /// Throws DivergedError when E_tot has grown far beyond its initial scale (a finite blow-up).
   void check_energy();
@@ -104,6 +123,8 @@ class World {
   NeighbourList nl_;
   std::unique_ptr<EvalStats> stats_;
   std::vector<double> h_limit_;
+  std::vector<StageTiming> timings_;
+  std::vector<std::uint32_t> by_id_;
   double t_ = 0.0, dt_last_ = 0.0;
   double dt_first_ = 0.0;     ///< the first adaptive dt (a collapse far below it is a blow-up)
   double energy_scale_ = -1.0, energy0_ = 0.0;  ///< |E_kin| + |E_int| + |E_pot| and E_tot after step 1

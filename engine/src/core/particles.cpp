@@ -4,6 +4,7 @@
 #include <numeric>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 namespace sph {
 
@@ -44,21 +45,37 @@ void Particles::resize_total(std::size_t total) {
 }
 
 void Particles::partition_by_kind() {
-  resize_total(n_);
-  std::vector<std::size_t> order(n_);
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::stable_partition(order.begin(), order.end(), [&](std::size_t i) { return !is_wall(i); });
-  auto permute = [&](auto& a) {
-    auto copy = a;
-    for (std::size_t k = 0; k < n_; ++k) a[k] = copy[order[k]];
-  };
-  for (int k = 0; k < 3; ++k) { permute(x[k]); permute(v[k]); permute(a[k]); }
-  permute(id);
-  permute(kind);
-  for (std::size_t f = 0; f < kFieldCount; ++f)
-    if (fields_.has(static_cast<Field>(f))) permute(scalar_[f]);
+  std::vector<std::uint32_t> order(n_);
+  resize_total(n_);  // no ghosts yet
+  std::iota(order.begin(), order.end(), 0u);
+  std::stable_partition(order.begin(), order.end(), [&](std::uint32_t i) { return !is_wall(i); });
+  permute(order);
   n_fluid_ = 0;
   while (n_fluid_ < n_ && !is_wall(n_fluid_)) ++n_fluid_;
+}
+
+void Particles::permute(std::span<const std::uint32_t> order) {
+  if (order.size() != n_) throw std::invalid_argument("a permutation must cover every real particle");
+  std::vector<double> scratch;
+  auto apply = [&](auto& a) {
+    using T = typename std::decay_t<decltype(a)>::value_type;
+    if constexpr (std::is_same_v<T, double>) {
+      scratch.assign(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(n_));
+      for (std::size_t k = 0; k < n_; ++k) a[k] = scratch[order[k]];
+    } else {
+      const std::vector<T> copy(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(n_));
+      for (std::size_t k = 0; k < n_; ++k) a[k] = copy[order[k]];
+    }
+  };
+  for (int k = 0; k < 3; ++k) { apply(x[k]); apply(v[k]); apply(a[k]); }
+  apply(id);
+  apply(kind);
+  for (std::size_t f = 0; f < kFieldCount; ++f)
+    if (fields_.has(static_cast<Field>(f))) apply(scalar_[f]);
+  // ghosts stay where they are (their state is unchanged); their sources moved
+  std::vector<std::uint32_t> slot(n_);
+  for (std::size_t k = 0; k < n_; ++k) slot[order[k]] = static_cast<std::uint32_t>(k);
+  for (auto& src : ghost_src) src = slot[src];
 }
 
 }  // namespace sph

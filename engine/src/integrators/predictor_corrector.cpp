@@ -42,6 +42,18 @@ class PredictorCorrector final : public Integrator {
     return false;
   }
   void reset() override { have_rates_ = false; }
+  void permute(std::span<const std::uint32_t> order) override {
+    if (!have_rates_ || order.size() < rate_n_) return;
+    std::vector<double> copy;
+    auto apply = [&](std::vector<double>& a) {
+      if (a.size() < rate_n_) return;
+      copy.assign(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(rate_n_));
+      for (std::size_t k = 0; k < rate_n_; ++k) a[k] = copy[order[k]];
+    };
+    for (auto& a : a_) apply(a);
+    for (auto& d : drift_) apply(d);
+    for (auto& r : rates_) apply(r);
+  }
 
  private:
   void store_rates(const PhaseSpace& s) {

@@ -38,8 +38,11 @@ void build_grid(const Particles& p, const std::vector<double>& h, double radius,
   g.dim = p.dim();
   double hmin = 1e300, hmax = 0.0;
   for (std::size_t i = 0; i < N; ++i) { hmin = std::min(hmin, h[i]); hmax = std::max(hmax, h[i]); }
-  const double shrink[3] = {4.0, 3.0, 1.0};  // max stencil half-width per dimension
-  const double cell = radius * std::max(hmin, hmax / shrink[g.dim - 1]);
+  // Cells of half the search radius (at most: a quarter or a third where h varies a lot): the cells a
+  // particle's stencil visits, minus those out of reach, cover about 1.8x the area of its search circle
+  // in 2D, against 2.9x with cells of the full radius.
+  const double shrink[3] = {4.0, 3.0, 2.0};  // max stencil half-width per dimension
+  const double cell = radius * std::max(0.5 * hmin, hmax / shrink[g.dim - 1]);
   // Cap the number of cells so that a sparse cloud cannot allocate a huge grid.
   const double max_cells = 4.0 * static_cast<double>(N) + 64.0;
   const double per_axis = std::pow(max_cells, 1.0 / g.dim);
@@ -90,11 +93,21 @@ inline double gap(const Grid& g, int k, int c, double x) {
   return x < lo ? lo - x : (x > hi ? x - hi : 0.0);
 }
 
-/// Calls fn(j) for every particle j within radius*max(h_i,h_j) of particle i, in a fixed order.
-template <class Fn>
-void for_each_neighbour(const Grid& g, const Particles& p, const std::vector<double>& h, double radius,
-                        std::size_t i, Fn&& fn) {
+/// Appends to out (from slot `used` on) every particle j within radius*max(h_i,h_j) of particle i, in a
+/// fixed order (cell by cell, index order inside a cell), and returns the new `used`. Each candidate is
+/// written and kept or not by its distance test, with no branch to mispredict; `out` grows as needed.
+/// The grid's arrays are read through local pointers, which the stores cannot alias.
+std::size_t gather_neighbours(const Grid& g, const Particles& p, const std::vector<double>& h, double radius,
+                              std::size_t i, std::vector<std::uint32_t>& out, std::size_t used) {
   const double xi = p.x[0][i], yi = p.x[1][i], zi = p.x[2][i], hi = h[i];
+  const double* const sx = g.sx.data();
+  const double* const sy = g.sy.data();
+  const double* const sz = g.sz.data();
+  const double* const sh = g.sh.data();
+  const std::uint32_t* const order = g.order.data();
+  const std::uint32_t* const start = g.start.data();
+  const double* const cell_hmax = g.cell_hmax.data();
+  std::uint32_t* buf = out.data();
   int c[3] = {0, 0, 0};
   for (int k = 0; k < g.dim; ++k) c[k] = g.coord(p.x[k][i], k);
   int lo[3], up[3];
@@ -110,18 +123,24 @@ void for_each_neighbour(const Grid& g, const Particles& p, const std::vector<dou
       for (int c0 = lo[0]; c0 <= up[0]; ++c0) {
         const std::size_t cell = row + c0;
         const double g0 = gap(g, 0, c0, xi);
-        const double reach = radius * std::max(hi, g.cell_hmax[cell]);
+        const double reach = radius * std::max(hi, cell_hmax[cell]);
         if (g0 * g0 + g1 * g1 + g2 * g2 >= reach * reach) continue;  // nobody in this cell is in range
-        for (std::uint32_t s = g.start[cell], e = g.start[cell + 1]; s < e; ++s) {
-          const double dx = xi - g.sx[s], dy = yi - g.sy[s], dz = zi - g.sz[s];
-          const double R = radius * std::max(hi, g.sh[s]);
-          if (dx * dx + dy * dy + dz * dz < R * R) fn(g.order[s]);
+        const std::uint32_t b = start[cell], e = start[cell + 1];
+        if (used + (e - b) > out.size()) {  // rare: room for the whole cell
+          out.resize(2 * (used + (e - b)));
+          buf = out.data();
+        }
+        for (std::uint32_t s = b; s < e; ++s) {
+          const double dx = xi - sx[s], dy = yi - sy[s], dz = zi - sz[s];
+          const double R = radius * std::max(hi, sh[s]);
+          buf[used] = order[s];
+          used += dx * dx + dy * dy + dz * dz < R * R ? 1 : 0;
         }
       }
     }
   }
+  return used;
 }
-
 
 }  // namespace
 
@@ -154,12 +173,13 @@ void build_neighbours(const Particles& p, const std::vector<double>& h, double r
     // line, and updating their end pointers from two cores would serialise the loop (false sharing).
     std::vector<std::uint32_t> local;
     local.swap(buffers[t]);
-    local.clear();  // keeps its capacity from the last build
+    if (local.size() < 1024) local.resize(1024);  // its size is the capacity; kept from the last build
+    std::size_t used = 0;
     for (std::size_t i = b; i < e; ++i) {
-      out.offset[i] = static_cast<std::uint32_t>(local.size());  // relative to the block for now
-      for_each_neighbour(g, p, h, radius, i, [&](std::uint32_t j) { local.push_back(j); });
+      out.offset[i] = static_cast<std::uint32_t>(used);  // relative to the block for now
+      used = gather_neighbours(g, p, h, radius, i, local, used);
     }
-    base[t + 1] = local.size();
+    base[t + 1] = used;
 #pragma omp barrier
 #pragma omp single
     {
@@ -167,10 +187,29 @@ void build_neighbours(const Particles& p, const std::vector<double>& h, double r
       out.index.resize(base[T]);
       out.offset[n] = static_cast<std::uint32_t>(base[T]);
     }
-    std::copy(local.begin(), local.end(), out.index.begin() + static_cast<std::ptrdiff_t>(base[t]));
+    std::copy(local.begin(), local.begin() + static_cast<std::ptrdiff_t>(used),
+              out.index.begin() + static_cast<std::ptrdiff_t>(base[t]));
     for (std::size_t i = b; i < e; ++i) out.offset[i] += static_cast<std::uint32_t>(base[t]);
     local.swap(buffers[t]);  // keep the capacity for the next build
   }
+}
+
+void permute_neighbours(NeighbourList& nl, std::span<const std::uint32_t> order) {
+  const std::size_t n = order.size();
+  if (nl.offset.size() != n + 1) return;  // no lists yet
+  std::vector<std::uint32_t> slot(n);
+  for (std::size_t k = 0; k < n; ++k) slot[order[k]] = static_cast<std::uint32_t>(k);
+  std::vector<std::uint32_t> offset(n + 1, 0), index(nl.index.size());
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::uint32_t b = nl.offset[order[k]], e = nl.offset[order[k] + 1];
+    offset[k + 1] = offset[k] + (e - b);
+    for (std::uint32_t s = b; s < e; ++s) {
+      const std::uint32_t j = nl.index[s];
+      index[offset[k] + (s - b)] = j < n ? slot[j] : j;
+    }
+  }
+  nl.offset.swap(offset);
+  nl.index.swap(index);
 }
 
 void build_neighbours_brute(const Particles& p, const std::vector<double>& h, double radius, NeighbourList& out) {

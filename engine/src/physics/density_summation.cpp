@@ -7,6 +7,7 @@
 
 #include "core/parallel.h"
 #include "core/stages.h"
+#include "sph/kernel_shapes.h"
 #include "sph/newton.h"
 
 namespace sph {
@@ -18,25 +19,52 @@ struct Sums {
   int neighbours = 0; ///< count of b with r_ab < support h
 };
 
+/// The pairs of one particle that the h solve can reach (r < support h_limit), gathered once: the Newton
+/// iterations then sweep two short contiguous arrays instead of the neighbour list and the positions.
+struct Candidates {
+  std::vector<double> r2, w;  ///< squared distance [length^2] and weight w_b [mass]
+  std::size_t n = 0;
+};
+
 /// Volume: rho_a = m_a sum_b W_ab (every neighbour weighs m_a). SkipWalls: Lennard-Jones wall
 /// particles are not in the sums.
 template <bool Volume, bool SkipWalls>
-Sums density_sums(const Kernel& K, const Particles& p, std::size_t i, std::span<const std::uint32_t> nb,
-                  const std::vector<double>& m, double h) {
-  Sums s;
-  const double R2 = K.support() * K.support() * h * h;
+void gather(const Particles& p, std::size_t i, std::span<const std::uint32_t> nb, const std::vector<double>& m,
+            double reach2, Candidates& c) {
+  if (c.r2.size() < nb.size()) { c.r2.resize(nb.size()); c.w.resize(nb.size()); }
+  const double xi = p.x[0][i], yi = p.x[1][i], zi = p.x[2][i];
+  std::size_t n = 0;
   for (std::uint32_t j : nb) {
     if constexpr (SkipWalls) if (p.kind[j]) continue;
-    const double dx = p.x[0][i] - p.x[0][j], dy = p.x[1][i] - p.x[1][j], dz = p.x[2][i] - p.x[2][j];
+    const double dx = xi - p.x[0][j], dy = yi - p.x[1][j], dz = zi - p.x[2][j];
     const double r2 = dx * dx + dy * dy + dz * dz;
-    if (r2 >= R2) continue;
-    const double r = std::sqrt(r2);
-    const double w = Volume ? m[i] : m[j];
-    s.rho += w * K.W(r, h);
-    s.drho += w * K.dWdh(r, h);
-    ++s.neighbours;
+    c.r2[n] = r2;
+    c.w[n] = Volume ? m[i] : m[j];
+    n += r2 < reach2 ? 1 : 0;  // keeps the entry only inside the reach (no branch)
   }
-  return s;
+  c.n = n;
+}
+
+/// The sums at smoothing length h (seed 000 eqs. 3.2.17, 3.3.2): with q = r/h, W = sigma w(q)/h^d and
+/// dW/dh = -sigma (d w(q) + q w'(q))/h^(d+1), so one evaluation of the shape gives both. One running
+/// sum in list order: with the clamped shapes this is branch-free, and on this scalar (SSE2) target it
+/// measured faster than 2 or 4 interleaved partial sums.
+template <class Shape>
+Sums sums_at(const Shape& shape, double sigma, int d, const Candidates& c, double h) {
+  const double hinv = 1.0 / h, hinv2 = hinv * hinv, S2 = Shape::support * Shape::support;
+  const double dd = d;
+  double sw = 0.0, sd = 0.0, count = 0.0;  // a double count keeps the loop in SSE registers
+  for (std::size_t k = 0; k < c.n; ++k) {
+    const double q2 = c.r2[k] * hinv2;
+    const double q = std::sqrt(q2);
+    const double w = shape.w(q), dw = shape.dw(q);  // 0 beyond the support
+    sw += c.w[k] * w;
+    sd += c.w[k] * (dd * w + q * dw);
+    count += q2 < S2 ? 1.0 : 0.0;
+  }
+  double hd = hinv;
+  for (int k = 1; k < d; ++k) hd *= hinv;
+  return Sums{sigma * hd * sw, -sigma * hd * hinv * sd, static_cast<int>(count)};
 }
 
 class DensitySummation final : public Stage {
@@ -51,13 +79,15 @@ class DensitySummation final : public Stage {
 
   bool run(StageContext& c) override {
     const bool skip = c.prm.physics.walls == WallType::LennardJones;
-    if (volume_) return skip ? solve<true, true>(c) : solve<true, false>(c);
-    return skip ? solve<false, true>(c) : solve<false, false>(c);
+    return shape::with_shape(c.kernel.type(), c.p.dim(), [&](auto s) {
+      if (volume_) return skip ? solve<true, true>(c, s) : solve<true, false>(c, s);
+      return skip ? solve<false, true>(c, s) : solve<false, false>(c, s);
+    });
   }
 
  private:
-  template <bool Volume, bool SkipWalls>
-  bool solve(StageContext& c) {
+  template <bool Volume, bool SkipWalls, class Shape>
+  bool solve(StageContext& c, const Shape& shape) {
     const Kernel& K = c.kernel;
     Particles& p = c.p;
     const std::size_t n = p.fluid();
@@ -76,20 +106,25 @@ class DensitySummation final : public Stage {
     int overflow = 0;
     std::size_t bisections = 0;
 
-#pragma omp parallel for schedule(dynamic, 64) reduction(+ : overflow, bisections) if (p.size() >= kParallelMin)
+    const double sigma = K.sigma(), support = K.support();
+#pragma omp parallel reduction(+ : overflow, bisections) if (p.size() >= kParallelMin)
+    {
+    Candidates cand;  // this thread's
+#pragma omp for schedule(dynamic, 64)
     for (std::size_t i = 0; i < n; ++i) {
-      const auto nb = c.nl.of(i);
+      const double reach = support * (fixed ? h[i] : h_limit[i]);
+      gather<Volume, SkipWalls>(p, i, c.nl.of(i), m, reach * reach, cand);
       Sums s;
       double hi = h[i];
       int it = 0;
       bool converged = true;
       if (fixed) {
-        s = density_sums<Volume, SkipWalls>(K, p, i, nb, m, hi);
+        s = sums_at(shape, sigma, d, cand, hi);
       } else {
         // g(h) = rho(h) - m eta^d / h^d  (seed 000 eq. 3.5.1); g' = drho/dh + d m eta^d / h^(d+1)
         const NewtonResult r = newton_bracketed(
             [&](double hh, double& g, double& dg) {
-              s = density_sums<Volume, SkipWalls>(K, p, i, nb, m, hh);
+              s = sums_at(shape, sigma, d, cand, hh);
               double hd = hh;
               for (int k = 1; k < d; ++k) hd *= hh;
               const double target = m[i] * eta_d / hd;
@@ -109,6 +144,7 @@ class DensitySummation final : public Stage {
       omega[i] = fixed ? 1.0 : 1.0 + hi / (d * s.rho) * s.drho;
       nneigh[i] = s.neighbours;
       hiter[i] = it + (converged ? 0.0 : 1000.0);  // > 1000 marks non-converged particles
+    }
     }
     if (overflow > 0) return false;
 

@@ -15,15 +15,22 @@
 #include "core/stages.h"
 #include "courant.h"
 #include "continuity_output.h"
+#include "pair_filter.h"
 #include "pair_terms.h"
+#include "sph/kernel_shapes.h"
 
 namespace sph {
 namespace {
 
 /// Cont: also the continuity rate drho_a/dt = rho_a sum_b V_b (v*_a - v*_b) . grad W_ab(h_a) with its
 /// density diffusion (density_continuity.cpp), in the same pass (barotropic flows only).
-template <bool GradH, ViscType V, bool Energy, bool Cont>
-void standard_loop(StageContext& c) {
+/// Per-particle factors of the pair loop, kept between evaluations (no reallocation).
+struct Factors {
+  std::vector<double> hinv, dnorm, A;
+};
+
+template <bool GradH, ViscType V, bool Energy, bool Cont, class Shape>
+void standard_loop(StageContext& c, const Shape& shape, Factors& fac) {
   const Kernel& K = c.kernel;
   const Params& prm = c.prm;
   Particles& p = c.p;
@@ -51,30 +58,51 @@ void standard_loop(StageContext& c) {
   if (xsph)
     for (int k = 0; k < 3; ++k) xs[k] = p[component(Field::XsphX, k)].data();
   double sum_nb = 0.0;
+  // per-particle factors, once per evaluation (ghosts included): 1/h, sigma/h^(d+1) of dW/dr, and
+  // A = P/(Omega rho^2)
+  const std::size_t total = p.total();
+  const int d = p.dim();
+  fac.hinv.resize(total);
+  fac.dnorm.resize(total);
+  fac.A.resize(total);
+#pragma omp parallel for schedule(static) if (p.size() >= kParallelMin)
+  for (std::size_t j = 0; j < total; ++j) {
+    const double s = 1.0 / h[j];
+    double hd = s * s;
+    for (int k = 1; k < d; ++k) hd *= s;
+    fac.hinv[j] = s;
+    fac.dnorm[j] = K.sigma() * hd;
+    fac.A[j] = GradH ? P[j] / ((*omega)[j] * rho[j] * rho[j]) : P[j] / (rho[j] * rho[j]);
+  }
+  const double* hinv = fac.hinv.data();
+  const double* dnorm = fac.dnorm.data();
+  const double* pA = fac.A.data();
 
-#pragma omp parallel for schedule(dynamic, 64) reduction(+ : sum_nb) if (p.size() >= kParallelMin)
+#pragma omp parallel reduction(+ : sum_nb) if (p.size() >= kParallelMin)
+  {
+  std::vector<std::uint32_t> near;  // this thread's interacting neighbours of i
+#pragma omp for schedule(dynamic, 64)
   for (std::size_t i = 0; i < n; ++i) {
     const double xi = p.x[0][i], yi = p.x[1][i], zi = p.x[2][i];
     const double vxi = p.v[0][i], vyi = p.v[1][i], vzi = p.v[2][i];
     const double hi = h[i];
-    const double Ai = GradH ? P[i] / ((*omega)[i] * rho[i] * rho[i]) : P[i] / (rho[i] * rho[i]);
+    const double Ai = pA[i];
     double ax = 0.0, ay = 0.0, az = 0.0, du = 0.0, visc_heat = 0.0, cond = 0.0;
     double vs = cs[i];
     double drho = 0.0, diff = 0.0;
     int count = 1;
-    for (std::uint32_t j : c.nl.of(i)) {
-      if (j == i) continue;
-      if (skip_walls && p.kind[j]) continue;
+    const std::size_t count_near = interacting(p, h.data(), i, c.nl.of(i), support, skip_walls, near);
+    for (std::size_t k = 0; k < count_near; ++k) {
+      const std::uint32_t j = near[k];
       const double dx = xi - p.x[0][j], dy = yi - p.x[1][j], dz = zi - p.x[2][j];
       const double r2 = dx * dx + dy * dy + dz * dz;
       const double hj = h[j];
-      const double R = support * std::max(hi, hj);
-      if (r2 >= R * R || r2 == 0.0) continue;
       const double r = std::sqrt(r2);
       const double rinv = 1.0 / r;
-      const double dWi = K.dWdr(r, hi), dWj = K.dWdr(r, hj);  // dW/dr; grad W = r_hat dW/dr
+      // dW/dr = sigma dw/dq (r/h) / h^(d+1); grad W = r_hat dW/dr
+      const double dWi = dnorm[i] * shape.dw(r * hinv[i]), dWj = dnorm[j] * shape.dw(r * hinv[j]);
       const double dWm = 0.5 * (dWi + dWj);
-      const double Aj = GradH ? P[j] / ((*omega)[j] * rho[j] * rho[j]) : P[j] / (rho[j] * rho[j]);
+      const double Aj = pA[j];
       const double dvx = vxi - p.v[0][j], dvy = vyi - p.v[1][j], dvz = vzi - p.v[2][j];
       const double vdotr = dvx * dx + dvy * dy + dvz * dz;
       const double w = vdotr * rinv;
@@ -131,22 +159,23 @@ void standard_loop(StageContext& c) {
       sum_nb += count;
     }
   }
+  }
   if constexpr (Cont) ContinuityOutput::finish(c, sum_nb, n);
 }
 
-template <bool GradH, ViscType V>
-void dispatch_energy(StageContext& c, bool energy, bool cont) {
-  if (energy) standard_loop<GradH, V, true, false>(c);
-  else if (cont && !GradH) standard_loop<GradH, V, false, true>(c);
-  else standard_loop<GradH, V, false, false>(c);
+template <bool GradH, ViscType V, class Shape>
+void dispatch_energy(StageContext& c, bool energy, bool cont, const Shape& s, Factors& f) {
+  if (energy) standard_loop<GradH, V, true, false>(c, s, f);
+  else if (cont && !GradH) standard_loop<GradH, V, false, true>(c, s, f);
+  else standard_loop<GradH, V, false, false>(c, s, f);
 }
 
-template <bool GradH>
-void dispatch_visc(StageContext& c, ViscType v, bool energy, bool cont) {
+template <bool GradH, class Shape>
+void dispatch_visc(StageContext& c, ViscType v, bool energy, bool cont, const Shape& s, Factors& f) {
   switch (v) {
-    case ViscType::None: dispatch_energy<GradH, ViscType::None>(c, energy, cont); break;
-    case ViscType::Monaghan: dispatch_energy<GradH, ViscType::Monaghan>(c, energy, cont); break;
-    case ViscType::Laplacian: dispatch_energy<GradH, ViscType::Laplacian>(c, energy, cont); break;
+    case ViscType::None: dispatch_energy<GradH, ViscType::None>(c, energy, cont, s, f); break;
+    case ViscType::Monaghan: dispatch_energy<GradH, ViscType::Monaghan>(c, energy, cont, s, f); break;
+    case ViscType::Laplacian: dispatch_energy<GradH, ViscType::Laplacian>(c, energy, cont, s, f); break;
   }
 }
 
@@ -170,14 +199,18 @@ class ForcesStandard final : public Stage {
   }
   bool sets_acceleration() const override { return true; }
   bool run(StageContext& c) override {
-    if (grad_h_) dispatch_visc<true>(c, c.prm.physics.viscosity, energy_, cont_);
-    else dispatch_visc<false>(c, c.prm.physics.viscosity, energy_, cont_);
+    // the kernel shape is chosen once here, not per pair
+    shape::with_shape(c.kernel.type(), c.p.dim(), [&](auto s) {
+      if (grad_h_) dispatch_visc<true>(c, c.prm.physics.viscosity, energy_, cont_, s, factors_);
+      else dispatch_visc<false>(c, c.prm.physics.viscosity, energy_, cont_, s, factors_);
+    });
     return true;
   }
   double dt_limit(const StageContext& c) const override { return courant_limit(c.p); }
 
  private:
   bool grad_h_, energy_, cont_;
+  Factors factors_;
 };
 
 }  // namespace

@@ -93,15 +93,20 @@ Snapshot World::snapshot() const {
   s.t = t_;
   s.dt = dt_last_;
   s.count = n;
+  // entries in id order (by_id_): a particle keeps its place in every snapshot whatever the storage order
   s.x.resize(n); s.y.resize(n); s.z.resize(n); s.h.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    s.x[i] = static_cast<float>(p_.x[0][i]);
-    s.y[i] = static_cast<float>(p_.x[1][i]);
-    s.z[i] = static_cast<float>(p_.x[2][i]);
-    s.h[i] = static_cast<float>(p_[Field::H][i]);
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t i = by_id_[k];
+    s.x[k] = static_cast<float>(p_.x[0][i]);
+    s.y[k] = static_cast<float>(p_.x[1][i]);
+    s.z[k] = static_cast<float>(p_.x[2][i]);
+    s.h[k] = static_cast<float>(p_[Field::H][i]);
   }
   const bool walls = p_.fluid() < n;
-  if (walls) s.kind.assign(p_.kind.begin(), p_.kind.begin() + static_cast<std::ptrdiff_t>(n));
+  if (walls) {
+    s.kind.resize(n);
+    for (std::size_t k = 0; k < n; ++k) s.kind[k] = p_.kind[by_id_[k]];
+  }
   for (int k = 0; k < 3; ++k) {
     s.bounds[2 * k] = static_cast<float>(domain_.lo[k]);
     s.bounds[2 * k + 1] = static_cast<float>(domain_.hi[k]);
@@ -112,9 +117,10 @@ Snapshot World::snapshot() const {
     f.label = std::move(label);
     f.values.resize(n);
     bool first = true;
-    for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t i = by_id_[k];
       const float v = static_cast<float>(value(i));
-      f.values[i] = v;
+      f.values[k] = v;
       if (!std::isfinite(v) || p_.is_wall(i)) continue;  // the range is the fluid's
       if (first) { f.min = f.max = v; first = false; }
       f.min = std::min(f.min, v);
