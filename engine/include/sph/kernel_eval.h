@@ -8,11 +8,11 @@
 namespace sph {
 
 inline double Kernel::w(double q) const {
-  return shape::with_shape(type_, dim_, [q](auto s) { return s.w(q); });
+  return shape::with_shape(type_, dim_, [q](auto s) __attribute__((always_inline)) { return s.w(q); });
 }
 
 inline double Kernel::dw(double q) const {
-  return shape::with_shape(type_, dim_, [q](auto s) { return s.dw(q); });
+  return shape::with_shape(type_, dim_, [q](auto s) __attribute__((always_inline)) { return s.dw(q); });
 }
 
 inline Kernel::Scale Kernel::scale(double h) const {
@@ -26,8 +26,17 @@ inline Kernel::Scale Kernel::scale(double h) const {
 }
 
 [[gnu::always_inline]] inline void Kernel::w_dw(double q, double& w_out, double& dw_out) const {
-  w_out = w(q);
-  dw_out = dw(q);
+  if (type_ == KernelType::M4) {  // the liquids' kernel: a single compare instead of the dispatch
+    const shape::M4 s;
+    w_out = s.w(q);
+    dw_out = s.dw(q);
+    return;
+  }
+  // one dispatch for both: inside it the shape's clamped terms are shared by w and dw
+  shape::with_shape(type_, dim_, [&](auto s) __attribute__((always_inline)) {
+    w_out = s.w(q);
+    dw_out = s.dw(q);
+  });
 }
 
 [[gnu::always_inline]] inline void Kernel::eval(const Scale& s, double r, double& W_out, double& dWdr_out) const {

@@ -95,7 +95,7 @@ struct WendlandC4 {
 
 /// Calls f(shape) with the shape object of `type` (Wendland shapes know whether dim == 1).
 template <class F>
-decltype(auto) with_shape(KernelType type, int dim, F&& f) {
+[[gnu::always_inline]] inline decltype(auto) with_shape(KernelType type, int dim, F&& f) {
   switch (type) {
     case KernelType::M4: return std::forward<F>(f)(M4{});
     case KernelType::M5: return std::forward<F>(f)(M5{});

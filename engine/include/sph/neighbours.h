@@ -29,6 +29,12 @@ struct NeighbourList {
 /// particles (ghosts included).
 void build_neighbours(const Particles& p, const std::vector<double>& h, double radius, NeighbourList& out);
 
+/// The entries of `wide` (lists built with a larger radius) with |r_i - r_j| < radius * max(h_i, h_j),
+/// each list in its order, into `out`: what build_neighbours(p, h, radius) finds, once every pair within
+/// `radius` is in `wide` (Verlet lists). Self-pairs are kept.
+void filter_neighbours(const Particles& p, const std::vector<double>& h, double radius, const NeighbourList& wide,
+                       NeighbourList& out);
+
 /// The lists after the real particles were reordered (slot k holds the particle that was at order[k];
 /// ghosts, at index >= order.size(), stay): the same pairs, renumbered, each list in its old order.
 void permute_neighbours(NeighbourList& nl, std::span<const std::uint32_t> order);

@@ -1,6 +1,7 @@
 // The simulation: particles, boundaries, the scene's pipeline of stages and an integrator. Headless
 // runs and tests call step() directly (no threads); the GUI's stepper thread owns one World.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <stdexcept>
@@ -125,6 +126,10 @@ class World {
   std::vector<double> h_limit_;
   std::vector<StageTiming> timings_;
   std::vector<std::uint32_t> by_id_;
+  NeighbourList wide_;                       ///< Verlet lists (fixed h, no ghosts), nl_ is filtered from them
+  bool lists_valid_ = false;                 ///< wide_ may be reused
+  std::array<std::vector<double>, 3> x_built_;  ///< positions when the lists were built
+  double verlet_margin_ = 0.0;               ///< twice the displacement the lists tolerate [length]
   double t_ = 0.0, dt_last_ = 0.0;
   double dt_first_ = 0.0;     ///< the first adaptive dt (a collapse far below it is a blow-up)
   double energy_scale_ = -1.0, energy0_ = 0.0;  ///< |E_kin| + |E_int| + |E_pot| and E_tot after step 1

@@ -23,6 +23,11 @@ namespace {
 /// within a few cache lines of each other; a reordering costs about as much as a tenth of one step.
 constexpr std::int64_t kReorderEvery = 16;
 
+/// Lists of a fixed-h scene without ghosts are built this fraction of the support beyond it and kept
+/// while no particle has moved more than half of that: a pair that comes within reach was in reach of
+/// the longer list when it was built.
+constexpr double kVerletSkin = 0.15;
+
 /// Seconds since `t0` on the monotonic clock.
 double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -117,6 +122,7 @@ void World::reorder() {
   p_.permute(order);
   integrator_->permute(order);
   permute_neighbours(nl_, order);  // the lists stay valid for the current state
+  lists_valid_ = false;             // but are rebuilt at the next evaluation (x_built_ is not permuted)
   if (h_limit_.size() == n) {
     const std::vector<double> old = h_limit_;
     for (std::size_t k = 0; k < n; ++k) h_limit_[k] = old[order[k]];
@@ -153,6 +159,7 @@ void World::set_params(const Params& p) {
   if (p.time.integrator != old.time.integrator) integrator_ = make_integrator(p.time.integrator);
   current_ = false;  // rates depend on the parameters: re-evaluate before the next step
   rates_known_ = false;
+  lists_valid_ = false;  // the kernel, h or the boundaries may have changed
   // new parameters may change dt and the energies legitimately (e.g. gravity switched on): the blow-up
   // guards measure from the next step on
   dt_first_ = 0.0;
@@ -162,17 +169,46 @@ void World::set_params(const Params& p) {
 void World::prepare_neighbours() {
   const std::size_t n = p_.size();
   auto& h = p_[Field::H];
-  double hmax = 0.0;
-#pragma omp parallel for reduction(max : hmax) if (n >= kParallelMin)
-  for (std::size_t i = 0; i < n; ++i) hmax = std::max(hmax, h[i]);
+  // Fixed h and no ghosts (an open domain): wide lists outlive a step (Verlet lists); the stages get
+  // the exact lists filtered from them at every evaluation.
+  bool open = true;
+  for (int k = 0; k < p_.dim(); ++k) open = open && domain_.bc[k] == Boundary::Open;
+  const bool verlet = cfg_.params.physics.smoothing == HMode::Fixed && open;
   const double reach = skin(cfg_.params.physics.smoothing);
-  make_ghosts(domain_, kernel_.support() * reach * hmax, p_);
+  if (verlet && lists_valid_ && wide_.offset.size() == n + 1) {
+    const std::size_t nf = p_.fluid();
+    double moved2 = 0.0;  // the largest squared displacement since the build: the same for any thread count
+#pragma omp parallel for reduction(max : moved2) if (nf >= kParallelMin)
+    for (std::size_t i = 0; i < nf; ++i) {
+      double d2 = 0.0;
+      for (int k = 0; k < 3; ++k) d2 += (p_.x[k][i] - x_built_[k][i]) * (p_.x[k][i] - x_built_[k][i]);
+      moved2 = std::max(moved2, d2);
+    }
+    if (4.0 * moved2 < verlet_margin_ * verlet_margin_) {
+      filter_neighbours(p_, h, kernel_.support() * reach, wide_, nl_);
+      return;
+    }
+  }
+  double hmax = 0.0, hmin = 1e300;
+#pragma omp parallel for reduction(max : hmax) reduction(min : hmin) if (n >= kParallelMin)
+  for (std::size_t i = 0; i < n; ++i) { hmax = std::max(hmax, h[i]); hmin = std::min(hmin, h[i]); }
+  const double wide_reach = reach * (verlet ? 1.0 + kVerletSkin : 1.0);
+  make_ghosts(domain_, kernel_.support() * wide_reach * hmax, p_);
   copy_ghost_velocity(p_);
   copy_ghost_fields(p_, start_shared_);
-  build_neighbours(p_, h, kernel_.support() * reach, nl_);
   h_limit_.resize(n);
 #pragma omp parallel for if (n >= kParallelMin)
   for (std::size_t i = 0; i < n; ++i) h_limit_[i] = reach * h[i];
+  lists_valid_ = verlet;
+  if (!verlet) {
+    build_neighbours(p_, h, kernel_.support() * reach, nl_);
+    wide_ = NeighbourList{};
+    return;
+  }
+  build_neighbours(p_, h, kernel_.support() * wide_reach, wide_);
+  filter_neighbours(p_, h, kernel_.support() * reach, wide_, nl_);
+  for (int k = 0; k < 3; ++k) x_built_[k].assign(p_.x[k].begin(), p_.x[k].begin() + static_cast<std::ptrdiff_t>(n));
+  verlet_margin_ = kVerletSkin * kernel_.support() * hmin;
 }
 
 void World::evaluate() {
