@@ -198,5 +198,36 @@ TEST(CellList, ListOrderIndependentOfThreadCount) {
   EXPECT_EQ(one.index, again.index);
 }
 
+// Verlet lists: lists built 20% wide, then the particles move by less than half the extra reach;
+// filtering the wide lists gives exactly the pairs a fresh search finds at the new positions.
+TEST(CellList, FilteredWideListsMatchAFreshSearchAfterSmallMoves) {
+  for (const auto& c : kClouds) {
+    std::vector<double> h;
+    Particles p = cloud(c.dim, c.n, box(c.dim, Boundary::Open), c.h0, 41 + c.dim, h);
+    std::fill(h.begin(), h.end(), 2.0 * c.h0);  // fixed h, as the Verlet lists require
+    NeighbourList wide, filtered, fresh;
+    const double skin = 0.2;
+    build_neighbours(p, h, kRadius * (1.0 + skin), wide);
+    Rng rng{99u + c.dim};
+    const double step = 0.49 * skin * kRadius * 2.0 * c.h0;  // just under half the extra reach
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      double d[3] = {0.0, 0.0, 0.0}, norm = 0.0;
+      for (int k = 0; k < c.dim; ++k) { d[k] = rng.uniform() - 0.5; norm += d[k] * d[k]; }
+      norm = std::sqrt(norm);
+      for (int k = 0; k < c.dim; ++k) p.x[k][i] += norm > 0.0 ? step * d[k] / norm : 0.0;
+    }
+    filter_neighbours(p, h, kRadius, wide, filtered);
+    build_neighbours(p, h, kRadius, fresh);
+    ASSERT_EQ(filtered.pairs(), fresh.pairs()) << c.dim << "D";
+    EXPECT_GT(wide.pairs(), fresh.pairs());  // the wide lists did hold extra candidates
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      std::vector<std::uint32_t> a(filtered.of(i).begin(), filtered.of(i).end()), b(fresh.of(i).begin(), fresh.of(i).end());
+      std::sort(a.begin(), a.end());
+      std::sort(b.begin(), b.end());
+      ASSERT_EQ(a, b) << c.dim << "D, particle " << i;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace sph
