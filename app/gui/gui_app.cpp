@@ -9,7 +9,9 @@
 #include <imgui_impl_opengl3.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
+#include <string>
 #include <thread>
 
 #include "draw_data_hash.h"
@@ -123,6 +125,12 @@ int run_gui(const GuiOptions& o) {
 
   while (!window->should_close()) {
     glfwPollEvents();
+    for (const std::string& t : o.tap_keys) {  // test hook: taps through the key callback
+      const auto colon = t.find(':');
+      if (std::stoll(t.substr(0, colon)) != stats.frames()) continue;
+      for (const char ch : t.substr(colon + 1)) window->tap_key(ch == ' ' ? GLFW_KEY_SPACE : std::toupper(ch));
+    }
+    state.key_presses = window->take_key_presses();
     state.update();
     const StepperFrame* f = state.frame();
     if (f) engine_rate.see(*f);
@@ -140,7 +148,8 @@ int run_gui(const GuiOptions& o) {
     const Layout L = compute_layout(static_cast<int>(io.DisplaySize.x), static_cast<int>(io.DisplaySize.y),
                                     ImGui::GetFontSize());
     draw_panels(state, L, stats);
-    if (!io.WantTextInput && ImGui::IsKeyPressed(GLFW_KEY_F12, false)) state.requests.screenshot = true;
+    if (!io.WantTextInput && std::count(state.key_presses.begin(), state.key_presses.end(), GLFW_KEY_F12))
+      state.requests.screenshot = true;
     if (f) view.interact(to_framebuffer(L.view), f->snapshot, &state.view);
     if (!f || state.building()) {  // World construction can take seconds (10^5 particles)
       const std::string text = "building " + state.scene_name() + " ...";
@@ -195,6 +204,7 @@ int run_gui(const GuiOptions& o) {
               engine_rate.rate() * static_cast<double>(f ? f->snapshot.count : 0), f ? f->snapshot.count : 0,
               so.threads);
   if (recorder.frames() > 0) std::printf("sph-gui: %d frames in %s/\n", recorder.frames(), recorder.dir().c_str());
+  if (f) std::printf("sph-gui: last state: step %lld, t = %.9g\n", static_cast<long long>(f->snapshot.step), f->snapshot.t);
   return rc;
 }
 

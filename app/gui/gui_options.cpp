@@ -34,6 +34,8 @@ int parse_options(int argc, char** argv, GuiOptions* out) {
   app.add_option("--record-every", o.record_every, "simulated time between recorded frames")
       ->check(CLI::PositiveNumber)->capture_default_str();
   app.add_option("--record-size", o.record_size, "recorded frame size WIDTHxHEIGHT")->capture_default_str();
+  app.add_option("--tap-keys", o.tap_keys,
+                 "test hook: FRAME:KEYS taps each key of KEYS (S, R, ' ' ...) at displayed frame FRAME (repeatable)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -45,6 +47,13 @@ int parse_options(int argc, char** argv, GuiOptions* out) {
   if (!size.empty() && !parse_size(size, &o.width, &o.height)) {
     std::fprintf(stderr, "sph-gui: --size %s: expected WIDTHxHEIGHT, e.g. 1600x900\n", size.c_str());
     return 2;
+  }
+  for (const std::string& t : o.tap_keys) {
+    const auto colon = t.find(':');
+    if (colon == std::string::npos || colon == 0 || t.find_first_not_of("0123456789") != colon) {
+      std::fprintf(stderr, "sph-gui: --tap-keys %s: expected FRAME:KEYS, e.g. 5:SSS\n", t.c_str());
+      return 2;
+    }
   }
   int w = 0, h = 0;
   if (!parse_size(o.record_size, &w, &h) || w % 2 || h % 2) {

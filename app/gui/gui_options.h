@@ -21,6 +21,9 @@ struct GuiOptions {
   std::string record;                ///< start recording PNG frames into this directory
   double record_every = 0.01;        ///< simulated time between recorded frames [time units]
   std::string record_size = "1280x720";  ///< recorded frame size WIDTHxHEIGHT
+  /// Test hook: FRAME:KEYS taps every key of KEYS (letters, ' ' for Space) at displayed frame FRAME, all
+  /// between the same two frames (the quick taps a key-state poll would lose).
+  std::vector<std::string> tap_keys;
 };
 
 /// Parses argv. Returns -1 to go on, or the exit code (0 after --help, 2 on a usage error).

@@ -92,6 +92,15 @@ void GuiState::set_real_time_factor(double f) {
   stepper_.set_real_time_factor(f);
 }
 
+void GuiState::resume() {
+  const StepperFrame* f = frame();
+  if (f && f->at_end && stop_at_end) {
+    reset();  // a run that stopped at t_end starts again and runs (the stepper resumes a rebuilt World)
+    return;
+  }
+  stepper_.resume();
+}
+
 void GuiState::set_stop_at_end(bool on) {
   stop_at_end = on;
   stepper_.set_stop_at_end(on);

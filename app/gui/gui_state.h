@@ -48,7 +48,8 @@ class GuiState {
   /// Loads another scene (its defaults, or a file's); the edit copies follow once it is built.
   void load(const RunConfig& cfg);
   void pause() { stepper_.pause(); }
-  void resume() { stepper_.resume(); }
+  /// Play; at t_end with "stop at t_end" on, play replays the run from t = 0.
+  void resume();
   void step_once() { stepper_.step_once(); }
   void set_real_time_factor(double f);
   void set_stop_at_end(bool on);
@@ -59,6 +60,7 @@ class GuiState {
   // --- view and user requests --------------------------------------------------------------------------
   render::ViewSettings view;
   Requests requests;
+  std::vector<int> key_presses;    ///< this frame's key presses (GLFW codes, in order): Window::take_key_presses
   std::string file_path;           ///< scene file path typed in the scene panel
   std::string message;             ///< last notice (file written, load error)
   bool message_is_error = false;

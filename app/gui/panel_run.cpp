@@ -3,6 +3,9 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
 #include "panels.h"
 
 namespace sph::gui {
@@ -12,7 +15,7 @@ void panel_run(GuiState& s) {
   const bool running = f && f->running;
   const float bw = (ImGui::GetContentRegionAvail().x - 2.f * ImGui::GetStyle().ItemSpacing.x) / 3.f;
   if (ImGui::Button(running ? "Pause" : "Play", ImVec2(bw, 0))) running ? s.pause() : s.resume();
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Space");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Space (at t_end with 'stop at t_end': replay from t = 0)");
   ImGui::SameLine();
   if (ImGui::Button("Step", ImVec2(bw, 0))) s.step_once();
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Pause and advance exactly one step (S)");
@@ -25,12 +28,21 @@ void panel_run(GuiState& s) {
     ImGui::SetTooltip("Rebuild the scene at t = 0 with the current parameters and scene values (R)");
   for (const std::string& p : pending) ImGui::TextColored(ImVec4(1.f, 0.7f, 0.3f, 1.f), "needs reset: %s", p.c_str());
 
-  // Keyboard shortcuts (when no text field has the keyboard). ImGui 1.86 indexes keys by the backend's
-  // codes; GLFW's letter keys are their upper-case ASCII codes.
+  // Keyboard shortcuts (when no text field has the keyboard), from the key events of this frame in
+  // order, so that quick taps are never lost. GLFW's letter keys are their upper-case ASCII codes.
   if (!ImGui::GetIO().WantCaptureKeyboard) {
-    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space), false)) running ? s.pause() : s.resume();
-    if (ImGui::IsKeyPressed('S')) s.step_once();
-    if (ImGui::IsKeyPressed('R', false)) s.reset();
+    bool run = running;
+    for (const int key : s.key_presses) {
+      if (key == GLFW_KEY_SPACE) {
+        run ? s.pause() : s.resume();
+        run = !run;
+      } else if (key == GLFW_KEY_S) {
+        s.step_once();
+        run = false;
+      } else if (key == GLFW_KEY_R) {
+        s.reset();
+      }
+    }
   }
 
   bool realtime = s.real_time_factor > 0.0;
@@ -47,7 +59,9 @@ void panel_run(GuiState& s) {
   if (!realtime) ImGui::EndDisabled();
   bool stop = s.stop_at_end;
   if (ImGui::Checkbox("stop at t_end", &stop)) s.set_stop_at_end(stop);
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Pause when t reaches the t_end parameter; Play continues past it.");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Pause when t reaches the t_end parameter; Play there replays from t = 0.\n"
+                      "Untick (or raise t_end) to run on.");
 
   if (ImGui::Button("Screenshot")) s.requests.screenshot = true;
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("The whole window as a PNG in the working directory (F12)");

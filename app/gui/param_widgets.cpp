@@ -1,5 +1,7 @@
 #include "param_widgets.h"
 
+#include "log_scale.h"
+
 #include <imgui.h>
 
 #include <algorithm>
@@ -75,12 +77,28 @@ bool param_widget(const ParamInfo& info, Params& p, bool pending, std::string* e
       case Widget::Logarithmic: {
         // Slide log10(v); show v itself (the "format" is the formatted value: it holds no conversion).
         // ImGui 1.86's own logarithmic sliders clamp values below 10^-precision, e.g. h_tol = 1e-10.
+        // Ctrl+click text input is off (it would read the typed number as log10 v): the field beside
+        // the slider takes typed values as they are.
         const double lo = std::log10(info.min), hi = std::log10(info.max);
-        double u = std::log10(std::max(v, info.min));
+        double u = log_position(v, info.min, info.max);
         char shown[32];
         std::snprintf(shown, sizeof shown, "%.3g", v);
-        changed = ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &u, &lo, &hi, shown);
-        if (changed) v = std::pow(10.0, u);
+        const float full = ImGui::CalcItemWidth(), field = std::max(60.f, 0.3f * full);
+        ImGui::SetNextItemWidth(full - field - ImGui::GetStyle().ItemInnerSpacing.x);
+        const std::string slider_id = "##log " + key;
+        if (ImGui::SliderScalar(slider_id.c_str(), ImGuiDataType_Double, &u, &lo, &hi, shown,
+                                ImGuiSliderFlags_NoInput)) {
+          v = log_value(u, info.min, info.max);
+          changed = true;
+        }
+        param_tooltip(info);
+        ImGui::SameLine(0.f, ImGui::GetStyle().ItemInnerSpacing.x);
+        ImGui::SetNextItemWidth(field);
+        double typed = v;
+        if (ImGui::InputDouble(label.c_str(), &typed, 0.0, 0.0, "%.6g", ImGuiInputTextFlags_EnterReturnsTrue)) {
+          v = typed;
+          changed = true;
+        }
         break;
       }
       case Widget::Text:

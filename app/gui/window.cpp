@@ -68,6 +68,7 @@ std::unique_ptr<Window> Window::create(int width, int height, const char* title,
     static_cast<Window*>(glfwGetWindowUserPointer(win))->damaged_ = true;
   });
   glfwSwapInterval(1);  // vsync where there is one; the frame cap in FrameStats covers the rest
+  glfwSetKeyCallback(w->window_, &Window::on_key);  // before ImGui's backend, which then chains to it
 
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
@@ -90,6 +91,22 @@ Window::~Window() {
   if (imgui_) ImGui::DestroyContext();
   if (window_) glfwDestroyWindow(window_);
   if (glfw_) glfwTerminate();
+}
+
+void Window::on_key(GLFWwindow* win, int key, int /*scancode*/, int action, int /*mods*/) {
+  if (action == GLFW_PRESS || action == GLFW_REPEAT)
+    static_cast<Window*>(glfwGetWindowUserPointer(win))->presses_.push_back(key);
+}
+
+std::vector<int> Window::take_key_presses() {
+  std::vector<int> out;
+  out.swap(presses_);
+  return out;
+}
+
+void Window::tap_key(int key) {
+  on_key(window_, key, 0, GLFW_PRESS, 0);
+  on_key(window_, key, 0, GLFW_RELEASE, 0);
 }
 
 bool Window::should_close() const { return glfwWindowShouldClose(window_); }

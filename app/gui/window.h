@@ -3,6 +3,7 @@
 #pragma once
 #include <memory>
 #include <string>
+#include <vector>
 
 struct GLFWwindow;
 
@@ -25,12 +26,20 @@ class Window {
   bool take_damage();
   /// GL entry-point loader for sph::render::Renderer::init (glfwGetProcAddress).
   static void* get_proc(const char* name);
+  /// Keys pressed since the last call (GLFW key codes, auto-repeats included), in order. Every tap
+  /// counts, also one pressed and released between two frames, which polling the key state once per
+  /// frame misses. Filled by GLFW's key callback (ImGui's backend chains to it).
+  std::vector<int> take_key_presses();
+  /// Test hook: a press and a release of `key`, delivered through the same callback as GLFW's events.
+  void tap_key(int key);
 
  private:
   Window() = default;
   GLFWwindow* window_ = nullptr;
   bool glfw_ = false, imgui_ = false, imgui_glfw_ = false, imgui_gl_ = false;
   bool damaged_ = true;
+  std::vector<int> presses_;
+  static void on_key(GLFWwindow* win, int key, int scancode, int action, int mods);
 };
 
 }  // namespace sph::gui

@@ -232,9 +232,15 @@ TEST(Stepper, StopsExactlyAtEndTime) {
   const StepperFrame* f = s.latest();
   EXPECT_FALSE(f->running);
   EXPECT_NEAR(f->snapshot.t, 0.02, 1e-12);
-  // Resuming continues past t_end.
+  // Play at t_end with "stop at t_end" on stays at t_end (it ran on to t = 0.77 on sod before)...
   s.resume();
-  EXPECT_TRUE(wait_for(s, [](const StepperFrame& f) { return f.snapshot.t > 0.021; }));
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // long enough for hundreds of steps
+  EXPECT_NEAR(s.latest()->snapshot.t, 0.02, 1e-12) << "ran on past t_end";
+  EXPECT_FALSE(s.latest()->running);
+  // ...and runs on once the stop is off.
+  s.set_stop_at_end(false);
+  s.resume();
+  EXPECT_TRUE(wait_for(s, [](const StepperFrame& g) { return g.snapshot.t > 0.021; }));
 }
 
 TEST(Stepper, ResetAfterTheEndRunsAgain) {

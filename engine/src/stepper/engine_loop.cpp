@@ -105,6 +105,9 @@ void EngineLoop::apply(const Command& c) {
       meter_.zero();
       break;
     case K::Resume:
+      // at t_end with "stop at t_end" on, there is nothing to run to: stay there (raise t_end or turn
+      // the stop off to run on)
+      if (world_ && at_end_ && stop_at_end_ && reached(world_->time(), world_->params().time.t_end)) break;
       if (world_ && !diverged_) {
         running_ = true;
         at_end_ = false;

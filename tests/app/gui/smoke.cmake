@@ -1,5 +1,6 @@
-# ctest driver for sph-gui under Xvfb. Variables: XVFB_RUN, GUI, CHECK, OUT, MODE (smoke | match), SPH.
+# ctest driver for sph-gui under Xvfb. Variables: XVFB_RUN, GUI, CHECK, OUT, MODE (smoke | keys | match), SPH.
 #   smoke: the issue's command line, then the screenshot checks;
+#   keys:  quick key taps through the key callback (--tap-keys) are all taken;
 #   match: the GUI records the t = 0 frame of sod, the headless program renders the same frame, and the
 #          two PNGs are compared.
 file(REMOVE_RECURSE ${OUT})
@@ -16,6 +17,21 @@ endfunction()
 if(MODE STREQUAL "smoke")
   run(${XVFB_RUN} -a ${GUI} --scene sod --screenshot ${OUT}/shot.png --quit-after-frames 90)
   run(${CHECK} screenshot ${OUT}/shot.png)
+elseif(MODE STREQUAL "keys")
+  # Ten taps on S between two frames give ten single steps (a once-per-frame poll saw at most one);
+  # a tap on R later resets to step 0.
+  execute_process(COMMAND ${XVFB_RUN} -a ${GUI} --scene sod --paused --tap-keys 5:SSSSSSSSSS --quit-after-frames 60
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err WORKING_DIRECTORY ${OUT})
+  message("${out}${err}")
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "last state: step 10,")
+    message(FATAL_ERROR "expected 10 single steps from 10 quick taps on S")
+  endif()
+  execute_process(COMMAND ${XVFB_RUN} -a ${GUI} --scene sod --paused --tap-keys 5:SSSS --tap-keys 30:R
+                  --quit-after-frames 60 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err WORKING_DIRECTORY ${OUT})
+  message("${out}${err}")
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "last state: step 0,")
+    message(FATAL_ERROR "expected a quick tap on R to reset to step 0")
+  endif()
 elseif(MODE STREQUAL "match")
   run(${XVFB_RUN} -a ${GUI} --scene sod --paused --record ${OUT}/gui --record-size 1280x720 --quit-after-frames 60)
   run(${SPH} run sod --until 0 --frames ${OUT}/headless --size 1280x720 --quiet)
