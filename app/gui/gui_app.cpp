@@ -23,6 +23,7 @@
 #include "particle_view.h"
 #include "png_writer.h"
 #include "recorder.h"
+#include "unique_path.h"
 #include "sph/config.h"
 #include "sph/stepper.h"
 #include "view_target.h"
@@ -182,7 +183,8 @@ int run_gui(const GuiOptions& o) {
     handle_recording(state, recorder);
     if (state.requests.screenshot) {
       state.requests.screenshot = false;
-      const std::string path = "sph-gui_" + (f ? f->snapshot.scene + "_step" + std::to_string(f->snapshot.step) : "empty") + ".png";
+      const std::string path = unique_path(
+          "sph-gui_" + (f ? f->snapshot.scene + "_step" + std::to_string(f->snapshot.step) : "empty"), ".png");
       if (screenshot(path, fw, fh, &err)) state.notify("wrote " + path);
       else state.notify(err, true);
     }

@@ -30,7 +30,8 @@ void panel_scene(GuiState& s) {
     ImGui::TextDisabled("%s: %s", current->category.c_str(), current->description.c_str());
     ImGui::PopTextWrapPos();
   }
-  ImGui::InputTextWithHint("##file", "assets/scenes/sod.json", &s.file_path);
+  const std::string hint = "assets/scenes/" + s.scene_name() + ".json";  // the running scene's own file
+  ImGui::InputTextWithHint("##file", hint.c_str(), &s.file_path);
   ImGui::SameLine();
   if (ImGui::Button("Open file") && !s.file_path.empty()) {
     try {
