@@ -197,28 +197,37 @@ void build_neighbours(const Particles& p, const std::vector<double>& h, double r
 void filter_neighbours(const Particles& p, const std::vector<double>& h, double radius, const NeighbourList& wide,
                        NeighbourList& out) {
   const std::size_t n = wide.offset.size() - 1;
-  out.offset.resize(n + 1);
-  out.index.resize(wide.index.size());  // an upper bound; trimmed below
   const double* x = p.x[0].data();
   const double* y = p.x[1].data();
   const double* z = p.x[2].data();
   const double* hh = h.data();
-  // Serial and branch-free: about 2 ns per entry, a small part of the build it replaces.
-  std::uint32_t* buf = out.index.data();
-  std::size_t used = 0;
+  auto keep = [&](std::size_t i, std::uint32_t j) {
+    const double dx = x[i] - x[j], dy = y[i] - y[j], dz = z[i] - z[j];
+    const double R = radius * std::max(hh[i], hh[j]);
+    return dx * dx + dy * dy + dz * dz < R * R;
+  };
+  // Two branch-free passes, each a parallel loop over particles: count, then (after the prefix sum) fill.
+  // Each list keeps its order, so the result is the same for any thread count.
+  out.offset.assign(n + 1, 0);
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
   for (std::size_t i = 0; i < n; ++i) {
-    out.offset[i] = static_cast<std::uint32_t>(used);
-    const double xi = x[i], yi = y[i], zi = z[i], hi = hh[i];
-    for (std::uint32_t s = wide.offset[i], e = wide.offset[i + 1]; s < e; ++s) {
+    std::uint32_t count = 0;
+    for (std::uint32_t s = wide.offset[i], e = wide.offset[i + 1]; s < e; ++s) count += keep(i, wide.index[s]) ? 1 : 0;
+    out.offset[i + 1] = count;
+  }
+  for (std::size_t i = 0; i < n; ++i) out.offset[i + 1] += out.offset[i];
+  out.index.resize(out.offset[n]);
+  std::uint32_t* buf = out.index.data();
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+  for (std::size_t i = 0; i < n; ++i) {
+    std::uint32_t used = out.offset[i];
+    const std::uint32_t last = out.offset[i + 1];
+    for (std::uint32_t s = wide.offset[i], e = wide.offset[i + 1]; s < e && used < last; ++s) {
       const std::uint32_t j = wide.index[s];
-      const double dx = xi - x[j], dy = yi - y[j], dz = zi - z[j];
-      const double R = radius * std::max(hi, hh[j]);
       buf[used] = j;
-      used += dx * dx + dy * dy + dz * dz < R * R ? 1 : 0;
+      used += keep(i, j) ? 1 : 0;
     }
   }
-  out.offset[n] = static_cast<std::uint32_t>(used);
-  out.index.resize(used);
 }
 
 void permute_neighbours(NeighbourList& nl, std::span<const std::uint32_t> order) {
