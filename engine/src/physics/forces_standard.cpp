@@ -22,12 +22,14 @@
 namespace sph {
 namespace {
 
-/// Cont: also the continuity rate drho_a/dt = rho_a sum_b V_b (v*_a - v*_b) . grad W_ab(h_a) with its
-/// density diffusion (density_continuity.cpp), in the same pass (barotropic flows only).
 /// Per-particle factors of the pair loop, kept between evaluations (no reallocation).
 struct Factors {
   std::vector<double> hinv, dnorm, A;
 };
+
+/// Cont: also the continuity rate drho_a/dt = rho_a sum_b V_b (v*_a - v*_b) . grad W_ab(h_a) with its
+/// density diffusion (density_continuity.cpp), in the same pass (barotropic flows only). Shape: the
+/// kernel's shape, fixed at compile time (one instantiation per kernel, chosen once per evaluation).
 
 template <bool GradH, ViscType V, bool Energy, bool Cont, class Shape>
 void standard_loop(StageContext& c, const Shape& shape, Factors& fac) {

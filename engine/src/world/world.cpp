@@ -15,12 +15,10 @@
 namespace sph {
 namespace {
 
-/// How far beyond the current h the neighbour lists reach: the Newton-Raphson solve may grow h by 20%
-/// before the list is rebuilt; an evolved h changes by far less than 5% in a step; a fixed h needs no
-/// margin (lists are rebuilt at every evaluation, for the positions of that evaluation).
 /// Steps between two spatial reorderings of the particle arrays: particles move less than about
 /// 16 × 0.3 h in that time (the CFL factor keeps a step's displacement below 0.3 h), so neighbours stay
-/// within a few cache lines of each other; a reordering costs about as much as a tenth of one step.
+/// within a few cache lines of each other; a reordering (a sort of N keys, a copy of each field) costs
+/// far less than a step.
 constexpr std::int64_t kReorderEvery = 16;
 
 /// Lists of a fixed-h scene without ghosts are built this fraction of the support beyond it and kept
@@ -33,6 +31,9 @@ double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+/// How far beyond the current h the neighbour lists reach: the Newton-Raphson solve may grow h by 20%
+/// before the list is rebuilt; an evolved h changes by far less than 5% in a step; a fixed h needs no
+/// margin (the lists are exact for the positions of each evaluation; see kVerletSkin).
 double skin(HMode mode) {
   switch (mode) {
     case HMode::Variable: return 1.2;
