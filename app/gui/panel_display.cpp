@@ -80,6 +80,10 @@ void panel_display(GuiState& s) {
     v.range_max = shown->max;
   }
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("On: every frame uses the field's min..max. Off: a fixed range.");
+  ImGui::Checkbox("log10 scale", &v.log_scale);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Colour (and the profile's y axis) by log10 of the field: for densities spanning decades\n"
+                      "(a collapse). Values <= 0 are not drawn. A fixed range is then in log10 units.");
   if (!v.auto_range) {
     float r[2] = {v.range_min, v.range_max};
     if (ImGui::InputFloat2("range", r, "%.4g", ImGuiInputTextFlags_EnterReturnsTrue) && r[1] > r[0]) {

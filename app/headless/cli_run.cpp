@@ -57,6 +57,7 @@ std::unique_ptr<FrameRecorder> make_recorder(const RunOptions& opt) {
     fo.range_min = lo;
     fo.range_max = hi;
   }
+  fo.log_scale = opt.log_scale;
   fo.profile_axis = opt.profile_axis;
   fo.video = opt.video;
   std::string err;

@@ -19,6 +19,7 @@ struct RunOptions {
   std::string color_by = "rho";
   std::string cmap = "viridis";
   std::string range = "auto";
+  bool log_scale = false;
   std::string profile_axis = "off";  ///< 2D scenes: "x" or "y" plots the field against that coordinate
   std::string video;
 };

@@ -21,12 +21,23 @@ struct Renderer::Impl {
   ParticlePass particles;
   OverlayPass overlay;
   FrameBuild frame{font};  // reused between frames (keeps its buffers' capacity)
+  sph::SnapshotField log_field;  // the shown field as log10, when the view asks for it
   bool ready = false;
 };
 
 namespace {
 
-ShownField choose_field(const sph::Snapshot& snap, const ViewSettings& view) {
+/// The field as log10 of its values (non-positive values become NaN and are not drawn).
+void log10_field(const sph::SnapshotField& in, sph::SnapshotField* out) {
+  out->name = in.name;
+  out->label = "log10 " + (in.label.empty() ? in.name : in.label);
+  out->values.resize(in.values.size());
+  for (std::size_t i = 0; i < in.values.size(); ++i)
+    out->values[i] = in.values[i] > 0.f ? std::log10(in.values[i]) : std::nanf("");
+  out->min = out->max = std::nanf("");  // resolve_range recomputes them over the finite values
+}
+
+ShownField choose_field(const sph::Snapshot& snap, const ViewSettings& view, sph::SnapshotField* log_storage) {
   ShownField s;
   s.cmap = parse_colormap(view.cmap).value_or(Colormap::Viridis);
   if (!parse_colormap(view.cmap)) s.warning = "unknown colour map '" + view.cmap + "'";
@@ -36,6 +47,10 @@ ShownField choose_field(const sph::Snapshot& snap, const ViewSettings& view) {
     s.warning = "no field '" + view.color_by + "'";
   }
   if (s.field == nullptr) return s;
+  if (view.log_scale) {
+    log10_field(*s.field, log_storage);
+    s.field = log_storage;
+  }
   s.label = s.field->label.empty() ? s.field->name : s.field->label;
   s.range = resolve_range(*s.field, view, snap.kind);  // the fluid's range: walls are grey
   return s;
@@ -84,7 +99,7 @@ void Renderer::shutdown() {
 void Renderer::render(const sph::Snapshot& snap, const ViewSettings& view, int width, int height) {
   Impl& d = *impl_;
   if (!d.ready || width <= 0 || height <= 0) return;
-  const ShownField shown = choose_field(snap, view);
+  const ShownField shown = choose_field(snap, view, &d.log_field);
   compose(d.frame, snap, view, shown, width, height);
   draw(d, shown, width, height);
 }

@@ -14,5 +14,12 @@ SceneSpec elliptical_drop_scene();
 SceneSpec dam_break_scene();
 SceneSpec dam_break_slope_scene();
 SceneSpec hydrostatic_tank_scene();
+SceneSpec two_body_fall_scene();
+SceneSpec kepler_scene();
+SceneSpec solar_system_scene();
+SceneSpec dust_sphere_scene();
+SceneSpec dust_collision_scene();
+SceneSpec evrard_scene();
+SceneSpec polytrope_scene();
 
 }  // namespace sph::scenes

@@ -8,7 +8,9 @@ const std::vector<SceneSpec>& scene_registry() {
       scenes::sod_scene(),         scenes::castellanos_scene(), scenes::box_lattice_scene(),
       scenes::box_perturbed_scene(), scenes::box_random_scene(), scenes::tube2d_scene(),
       scenes::elliptical_drop_scene(), scenes::dam_break_scene(), scenes::dam_break_slope_scene(),
-      scenes::hydrostatic_tank_scene(),
+      scenes::hydrostatic_tank_scene(), scenes::two_body_fall_scene(), scenes::kepler_scene(),
+      scenes::solar_system_scene(), scenes::dust_sphere_scene(), scenes::dust_collision_scene(),
+      scenes::evrard_scene(), scenes::polytrope_scene(),
   };
   return table;
 }

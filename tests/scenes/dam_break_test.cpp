@@ -63,6 +63,26 @@ INSTANTIATE_TEST_SUITE_P(Formulations, DamBreakTank,
                                            std::pair{"standard_corrected", "lennard_jones"},
                                            std::pair{"corrected", "lennard_jones"}));
 
+TEST(DamBreakFront, WithinFivePercentOfTheMeasuredFronts) {
+  // The scene as it ships (dx = a/40, standard-corrected, dummy walls): the surge front against the nearer
+  // of Martin & Moyce 1952 and Koshizuka & Oka 1996 wherever they have data, for T <= 2.5 (the issue's
+  // criterion). Measured 0.5-4.3% at T = 0.44 ... 2.21 (largest at T = 1.77).
+  World w(RunConfig::from_scene("dam_break"));
+  const double t_end = 2.5 / std::sqrt(2.0 * 9.81 / 1.0);  // T = t sqrt(2 g / a), a = 1 m
+  double worst = 0.0, worst_T = 0.0;
+  int compared = 0;
+  while (w.time() < t_end) {
+    w.advance_to(std::min(t_end, w.time() + 0.02));
+    const double err = w.reference_value("err_data");
+    if (std::isnan(err)) continue;
+    ++compared;
+    if (err > worst) { worst = err; worst_T = w.reference_value("T"); }
+  }
+  std::printf("dam_break front: largest error %.2f%% at T = %.2f over %d comparisons\n", 100 * worst, worst_T, compared);
+  EXPECT_GT(compared, 20);
+  EXPECT_LT(worst, 0.05);
+}
+
 class DamBreakSlope : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(DamBreakSlope, ComesToRest) {

@@ -29,6 +29,7 @@ enum class Field : std::uint8_t {
   CorrFallback,  ///< 1 where the gradient correction was ill-conditioned and fell back to L = I
   XsphX, XsphY, XsphZ,  ///< XSPH velocity correction v* - v (seed 001 eq. 45) [length/time]
   VelGradXX, VelGradXY, VelGradXZ, VelGradYX, VelGradYY, VelGradYZ, VelGradZX, VelGradZY, VelGradZZ,  ///< dv_k/dx_l (seed 001 eq. 52) [1/time]
+  Potential,   ///< gravitational potential phi at the particle [length^2/time^2]
   Count
 };
 
@@ -121,6 +122,7 @@ constexpr std::array<FieldInfo, kFieldCount> kFieldInfo{{
     {"dvzdx", "dv_z/dx", field_detail::tx(2, 0), false, false},
     {"dvzdy", "dv_z/dy", field_detail::tx(2, 1), false, false},
     {"dvzdz", "dv_z/dz", field_detail::tx(2, 2), false, false},
+    {"phi", "gravitational potential phi", 0, true, true},
 }};
 
 inline const FieldInfo& info(Field f) { return kFieldInfo[index(f)]; }

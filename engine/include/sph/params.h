@@ -14,6 +14,11 @@ enum class KernelType { M4, M5, M6, Gaussian, WendlandC2, WendlandC4 };
 /// Time integrators: explicit Euler, RK4 (seed 000 App. A), leapfrog kick-drift-kick,
 /// and the modified-Euler predictor-corrector of seed 001 eqs. 56–59.
 enum class IntegratorType { Euler, RK4, Leapfrog, PredictorCorrector };
+/// How self-gravity is softened at short range.
+enum class Softening {
+  Plummer,  ///< -G m x / (|x|^2 + eps^2)^(3/2) (seed 003 eq. 2.43, denominator corrected)
+  Kernel,   ///< the mass of each particle spread like the SPH kernel of its h (Price & Monaghan 2007)
+};
 
 struct KernelParams {
   KernelType type = KernelType::M4;  ///< kernel family (live: takes effect at the next step)
@@ -49,6 +54,7 @@ struct TimeParams {
 struct GasParams {
   double gamma = 1.4;  ///< adiabatic index of P = (gamma-1) rho u (seed 000 eq. 3.3.23) [dimensionless]
   double cs = 1.0;     ///< isothermal sound speed, P = cs^2 rho [length/time]
+  double K = 0.6366197723675814;  ///< polytropic constant of P = K rho^gamma [pressure/density^gamma] (2/pi: R = 1 for n = 1, G = M = 1)
   bool operator==(const GasParams&) const = default;
 };
 
@@ -86,7 +92,17 @@ struct XsphParams {
 /// Uniform body force (physics.body_force = uniform).
 struct BodyParams {
   double gx = 0.0, gy = -9.81, gz = 0.0;  ///< acceleration [length/time^2]
+  double tau = 0.1;                        ///< damping time of physics.body_force = damping [time]
   bool operator==(const BodyParams&) const = default;
+};
+
+/// Self-gravity (physics.gravity = direct or tree).
+struct GravityParams {
+  double G = 1.0;        ///< gravitational constant [length^3/(mass time^2)]; 4 pi^2 in AU, Msun, yr
+  double eps = 0.0;      ///< Plummer softening length [length]
+  double theta = 0.5;    ///< Barnes-Hut opening angle [dimensionless]: 0 opens every cell (exact)
+  Softening softening = Softening::Plummer;
+  bool operator==(const GravityParams&) const = default;
 };
 
 /// Wall particles (physics.walls).
@@ -118,6 +134,7 @@ struct Params {
   ConductionParams conduction;  ///< conduction.*
   XsphParams xsph;           ///< xsph.*
   BodyParams body;           ///< body.*
+  GravityParams gravity;     ///< gravity.*
   WallParams walls;          ///< walls.*
   CorrectionParams correction;  ///< correction.*
   bool operator==(const Params&) const = default;
@@ -127,5 +144,7 @@ const char* to_string(KernelType k);
 const char* to_string(IntegratorType i);
 bool parse(const std::string& s, KernelType& out);
 bool parse(const std::string& s, IntegratorType& out);
+const char* to_string(Softening s);
+bool parse(const std::string& s, Softening& out);
 
 }  // namespace sph

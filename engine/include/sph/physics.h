@@ -1,6 +1,6 @@
 // The physics a scene runs: one option per slot of the step pipeline, "none" included. World::evaluate
 // runs the chosen stages in a fixed order (density, smoothing length, EOS, wall pressure, corrections,
-// XSPH, forces with viscosity and energy, continuity, wall forces, body force); a stage that is "none"
+// XSPH, forces with viscosity and energy, continuity, wall forces, body force, self-gravity); a stage that is "none"
 // is not run and its fields are not allocated. The choices are parameters (keys physics.SLOT).
 #pragma once
 #include <array>
@@ -28,6 +28,7 @@ enum class EosType {
   IdealGas,    ///< P = (gamma - 1) rho u (seed 000 eq. 3.3.23)
   Tait,        ///< P = B [(rho/rho0)^gamma - 1] + p0, B = rho0 c0^2/gamma (seed 001 eq. 3; Cole 1948)
   Isothermal,  ///< P = c_s^2 rho (seed 003 eq. 3.72 with n -> infinity)
+  Polytropic,  ///< P = K rho^gamma, gamma = 1 + 1/n (seed 003 eq. 3.72)
 };
 /// Momentum (and continuity) discretisation.
 enum class ForceType {
@@ -45,6 +46,13 @@ enum class Toggle { Off, On };
 enum class BodyForce {
   None,
   Uniform,  ///< constant acceleration g (gravity near the ground)
+  Damping,  ///< a = -v / tau: relaxes a state to equilibrium (the polytrope's set-up)
+};
+/// Self-gravity between all particles (seed 003 eq. 2.3; softened, eq. 2.43).
+enum class GravityType {
+  None,
+  Direct,  ///< O(N^2) direct summation, a gather over every other particle in storage order
+  Tree,    ///< Barnes-Hut tree, monopole + quadrupole (seed 003 App. A): O(N log N)
 };
 /// Wall particles (kind Wall) built by the scene; periodic and mirror boundaries of the domain are ghosts.
 enum class WallType {
@@ -54,7 +62,7 @@ enum class WallType {
 };
 
 /// The slots, in pipeline order (the GUI lists them in this order).
-enum class Slot { Density, Smoothing, Eos, Force, Viscosity, Xsph, Conduction, Energy, BodyForce, Walls, Count };
+enum class Slot { Density, Smoothing, Eos, Force, Viscosity, Xsph, Conduction, Energy, BodyForce, Gravity, Walls, Count };
 inline constexpr std::size_t kSlotCount = static_cast<std::size_t>(Slot::Count);
 
 struct Physics {
@@ -67,6 +75,7 @@ struct Physics {
   Toggle conduction = Toggle::Off;  ///< artificial thermal conductivity (Price 2008, JCP 227, 10040)
   Toggle energy = Toggle::On;       ///< internal energy equation du/dt (seed 000 eq. 3.3.19)
   BodyForce body_force = BodyForce::None;
+  GravityType gravity = GravityType::None;
   WallType walls = WallType::None;
 
   bool corrected() const { return force == ForceType::Corrected || force == ForceType::StandardCorrected; }

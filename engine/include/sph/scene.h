@@ -44,7 +44,8 @@ struct SceneSpec {
   std::string description;  ///< one line for `sph list`
   int dim = 1;
   Params defaults;                       ///< the scene's default run parameters, its physics included
-  /// Per slot, the options this scene accepts (empty: any combination Physics::validate accepts).
+  /// Per slot, the options this scene accepts (empty: any combination Physics::validate accepts; for
+  /// the gravity slot, empty means none only).
   std::array<std::vector<std::string>, kSlotCount> allowed;
   std::vector<SceneParam> params;        ///< the scene's own parameters with defaults and ranges
   std::function<SceneSetup(const Params&, const SceneValues&)> build;

@@ -1,6 +1,6 @@
 // Pipeline order: density, smoothing length, EOS, wall pressure, corrections, velocity gradient, XSPH,
 // forces (with viscosity, conduction and the energy equation fused into their loop), continuity rate,
-// wall forces, body force. A slot set to "none" contributes no stage.
+// wall forces, body force, self-gravity. A slot set to "none" contributes no stage.
 #include "core/pipeline.h"
 
 #include "core/stages.h"
@@ -15,6 +15,7 @@ Pipeline::Pipeline(const Physics& ph, int dim) {
     case EosType::IdealGas: add(make_eos_ideal_gas()); break;
     case EosType::Tait: add(make_eos_tait()); break;
     case EosType::Isothermal: add(make_eos_isothermal()); break;
+    case EosType::Polytropic: add(make_eos_polytropic()); break;
     case EosType::None: break;
   }
   if (ph.walls == WallType::Dummy) add(make_walls_dummy());
@@ -34,6 +35,8 @@ Pipeline::Pipeline(const Physics& ph, int dim) {
   if (ph.density == DensityMode::Continuity) add(make_density_continuity(ph, dim));
   if (ph.walls == WallType::LennardJones) add(make_walls_lennard_jones());
   if (ph.body_force == BodyForce::Uniform) add(make_body_force_uniform());
+  if (ph.body_force == BodyForce::Damping) add(make_body_force_damping());
+  if (ph.gravity != GravityType::None) add(make_self_gravity(ph.gravity));
 
   fields_.add(Field::Mass).add(Field::H);
   for (const auto& s : stages_) {
@@ -43,6 +46,7 @@ Pipeline::Pipeline(const Physics& ph, int dim) {
       evolved_.push_back(e);
     }
     sets_a_ = sets_a_ || s->sets_acceleration();
+    uses_neighbours_ = uses_neighbours_ || s->uses_neighbours();
   }
   drifts_ = ph.xsph == Toggle::On;
 }

@@ -20,12 +20,14 @@ class Pipeline {
   bool sets_acceleration() const { return sets_a_; }
   /// Particles drift with v + an XSPH correction.
   bool drifts() const { return drifts_; }
+  /// Some stage reads the neighbour lists.
+  bool uses_neighbours() const { return uses_neighbours_; }
 
  private:
   std::vector<std::unique_ptr<Stage>> stages_;
   FieldSet fields_;
   std::vector<EvolvedPair> evolved_;
-  bool sets_a_ = false, drifts_ = false;
+  bool sets_a_ = false, drifts_ = false, uses_neighbours_ = false;
 };
 
 }  // namespace sph

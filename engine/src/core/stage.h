@@ -59,6 +59,9 @@ class Stage {
   virtual FieldSet shares() const { return {}; }
   /// State fields advanced by the integrator, with their rates.
   virtual std::vector<EvolvedPair> evolves() const { return {}; }
+  /// False if the stage never reads the neighbour lists (self-gravity, a body force): a pipeline of
+  /// such stages only builds no lists.
+  virtual bool uses_neighbours() const { return true; }
   /// True if the stage sets the accelerations (the first force stage); later stages add to them.
   virtual bool sets_acceleration() const { return false; }
   /// Computes. Returns false if a particle's h outgrew its neighbour list: the world rebuilds the list

@@ -18,6 +18,7 @@ std::unique_ptr<Stage> make_smoothing_evolved(int dim);
 std::unique_ptr<Stage> make_eos_ideal_gas();
 std::unique_ptr<Stage> make_eos_tait();
 std::unique_ptr<Stage> make_eos_isothermal();
+std::unique_ptr<Stage> make_eos_polytropic();
 std::unique_ptr<Stage> make_walls_dummy();
 std::unique_ptr<Stage> make_gradient_correction(int dim);
 std::unique_ptr<Stage> make_velocity_gradient(int dim);
@@ -31,5 +32,7 @@ std::unique_ptr<Stage> make_conduction();
 std::unique_ptr<Stage> make_energy_equation();
 std::unique_ptr<Stage> make_walls_lennard_jones();
 std::unique_ptr<Stage> make_body_force_uniform();
+std::unique_ptr<Stage> make_body_force_damping();
+std::unique_ptr<Stage> make_self_gravity(GravityType type);  // direct | tree
 
 }  // namespace sph

@@ -104,6 +104,7 @@ void check_physics(const SceneSpec& scene, const Physics& physics) {
     if (scene.allows(s.slot, option)) continue;
     std::string list;
     for (const auto& o : scene.allowed[static_cast<std::size_t>(s.slot)]) list += (list.empty() ? "" : ", ") + o;
+    if (list.empty()) list = "none (it has no self-gravity: gravity needs an open domain)";
     throw ConfigError("physics." + std::string(s.key) + " = " + option + ": scene " + scene.name + " takes only " +
                       list);
   }

@@ -119,8 +119,13 @@ const Owner kVariableH{"the Newton-Raphson smoothing-length solve", Slot::Smooth
                        [](const Params& p) { return p.physics.smoothing == HMode::Variable; }};
 const Owner kContinuity{"the continuity density", Slot::Density,
                         [](const Params& p) { return p.physics.density == DensityMode::Continuity; }};
-const Owner kIdealGas{"the ideal-gas equation of state", Slot::Eos,
-                      [](const Params& p) { return p.physics.eos == EosType::IdealGas; }};
+const Owner kGammaOwner{"the ideal-gas or polytropic equation of state", Slot::Eos, [](const Params& p) {
+                           return p.physics.eos == EosType::IdealGas || p.physics.eos == EosType::Polytropic;
+                         }};
+const Owner kPolytropic{"the polytropic equation of state", Slot::Eos,
+                        [](const Params& p) { return p.physics.eos == EosType::Polytropic; }};
+const Owner kDamping{"the damping body force", Slot::BodyForce,
+                     [](const Params& p) { return p.physics.body_force == BodyForce::Damping; }};
 const Owner kIsothermal{"the isothermal equation of state", Slot::Eos,
                         [](const Params& p) { return p.physics.eos == EosType::Isothermal; }};
 const Owner kTait{"the Tait equation of state", Slot::Eos, [](const Params& p) { return p.physics.eos == EosType::Tait; }};
@@ -135,6 +140,17 @@ const Owner kConduction{"the conduction stage", Slot::Conduction,
 const Owner kXsph{"the XSPH stage", Slot::Xsph, [](const Params& p) { return p.physics.xsph == Toggle::On; }};
 const Owner kBody{"the body-force stage", Slot::BodyForce,
                   [](const Params& p) { return p.physics.body_force == BodyForce::Uniform; }};
+const Owner kGravity{"the self-gravity stage", Slot::Gravity,
+                     [](const Params& p) { return p.physics.gravity != GravityType::None; }};
+const Owner kTree{"the Barnes-Hut tree", Slot::Gravity, [](const Params& p) { return p.physics.gravity == GravityType::Tree; }};
+const Owner kPlummer{"Plummer-softened self-gravity", Slot::Gravity, [](const Params& p) {
+                       return p.physics.gravity != GravityType::None && p.gravity.softening == Softening::Plummer;
+                     }};
+const Owner kKernel{"the SPH kernel (SPH stages or kernel-softened gravity)", Slot::Density, [](const Params& p) {
+                      const Physics& ph = p.physics;
+                      return ph.density != DensityMode::None || ph.force != ForceType::None || ph.xsph == Toggle::On ||
+                             (ph.gravity != GravityType::None && p.gravity.softening == Softening::Kernel);
+                    }};
 const Owner kLJ{"the Lennard-Jones wall stage", Slot::Walls,
                 [](const Params& p) { return p.physics.walls == WallType::LennardJones; }};
 const Owner kCorrected{"the kernel corrections (corrected formulations, MLS density re-initialisation)", Slot::Force,
@@ -150,15 +166,16 @@ std::vector<ParamInfo> build() {
   // The slots first, in pipeline order; "h_mode" was the smoothing slot's flat key.
   static const std::string slot_keys[kSlotCount] = {
       "physics.density", "physics.smoothing", "physics.eos", "physics.force", "physics.viscosity",
-      "physics.xsph", "physics.conduction", "physics.energy", "physics.body_force", "physics.walls"};
+      "physics.xsph", "physics.conduction", "physics.energy", "physics.body_force", "physics.gravity",
+      "physics.walls"};
   for (const SlotInfo& s : slot_table())
     t.push_back(slot(s, slot_keys[static_cast<std::size_t>(s.slot)], s.slot == Slot::Smoothing ? "h_mode" : ""));
 
-  t.push_back(choice<K>({"kernel.type", "choice", "smoothing kernel W (seed 000 eqs. 3.2.6-3.2.9)", "kernel"},
+  t.push_back(choice<K>({"kernel.type", "choice", "smoothing kernel W (seed 000 eqs. 3.2.6-3.2.9)", "kernel", kKernel},
                         [](Params& p) -> K& { return p.kernel.type; },
                         {K::M4, K::M5, K::M6, K::Gaussian, K::WendlandC2, K::WendlandC4}));
   t.push_back(real({"kernel.eta", "dimensionless",
-                    "h = eta (m/rho)^(1/d) (seed 000 eq. 3.3.33); 0 = the kernel's default", "eta"},
+                    "h = eta (m/rho)^(1/d) (seed 000 eq. 3.3.33); 0 = the kernel's default", "eta", kKernel},
                    [](Params& p) -> double& { return p.kernel.eta; }, 0.0, 4.0));
   t.push_back(integer({"density.reinit_every", "steps",
                        "re-initialise rho by the MLS-corrected kernel sum every this many steps (seed 001 eqs. "
@@ -176,11 +193,15 @@ std::vector<ParamInfo> build() {
   t.push_back(integer({"h.max_iter", "iterations", "Newton-Raphson iteration cap per particle", "h_max_iter",
                        kVariableH, true},
                       [](Params& p) -> int& { return p.h.max_iter; }, 1, 1000));
-  t.push_back(real({"gas.gamma", "dimensionless", "adiabatic index, P = (gamma-1) rho u (seed 000 eq. 3.3.23)", "gamma",
-                    kIdealGas, false},
+  t.push_back(real({"gas.gamma", "dimensionless",
+                    "adiabatic index, P = (gamma-1) rho u (seed 000 eq. 3.3.23); polytropic: gamma = 1 + 1/n", "gamma",
+                    kGammaOwner, false},
                    [](Params& p) -> double& { return p.gas.gamma; }, 1.0001, 10.0));
   t.push_back(real({"gas.cs", "length/time", "isothermal sound speed, P = cs^2 rho", "", kIsothermal, false},
                    [](Params& p) -> double& { return p.gas.cs; }, 1e-9, 1e9));
+  t.push_back(real({"gas.K", "pressure/density^gamma", "polytropic constant of P = K rho^gamma (seed 003 eq. 3.72)",
+                    "", kPolytropic, false},
+                   [](Params& p) -> double& { return p.gas.K; }, 1e-12, 1e12));
   t.push_back(real({"liquid.rho0", "mass/length^d", "reference density of the Tait EOS (seed 001 eq. 3)", "",
                     kTait, false},
                    [](Params& p) -> double& { return p.liquid.rho0; }, 1e-9, 1e9));
@@ -213,12 +234,30 @@ std::vector<ParamInfo> build() {
                    [](Params& p) -> double& { return p.conduction.alpha_u; }, 0.0, 10.0));
   t.push_back(real({"xsph.eps", "dimensionless", "XSPH strength epsilon (seed 001 eq. 45: 0.5)", "", kXsph, true},
                    [](Params& p) -> double& { return p.xsph.eps; }, 0.0, 1.0));
+  t.push_back(real({"body.tau", "time", "damping time of a = -v/tau (relaxation to equilibrium)", "", kDamping, true},
+                   [](Params& p) -> double& { return p.body.tau; }, 1e-9, 1e9));
   t.push_back(real({"body.gx", "length/time^2", "uniform body force, x component", "", kBody, true},
                    [](Params& p) -> double& { return p.body.gx; }, -1e6, 1e6));
   t.push_back(real({"body.gy", "length/time^2", "uniform body force, y component", "", kBody, true},
                    [](Params& p) -> double& { return p.body.gy; }, -1e6, 1e6));
   t.push_back(real({"body.gz", "length/time^2", "uniform body force, z component", "", kBody, true},
                    [](Params& p) -> double& { return p.body.gz; }, -1e6, 1e6));
+  t.push_back(real({"gravity.G", "length^3/(mass time^2)", "gravitational constant (4 pi^2 in AU, solar masses, years)",
+                    "G", kGravity, true},
+                   [](Params& p) -> double& { return p.gravity.G; }, 0.0, 1e12));
+  t.push_back(choice<Softening>({"gravity.softening", "choice",
+                                 "short-range softening: Plummer (seed 003 eq. 2.43) or the SPH kernel of each particle's "
+                                 "h (Price & Monaghan 2007)",
+                                 "", kGravity, true},
+                                [](Params& p) -> Softening& { return p.gravity.softening; },
+                                {Softening::Plummer, Softening::Kernel}));
+  t.push_back(real({"gravity.eps", "length", "Plummer softening length eps (seed 003 eq. 2.43); 0 = point masses",
+                    "eps", kPlummer, true},
+                   [](Params& p) -> double& { return p.gravity.eps; }, 0.0, 1e12));
+  t.push_back(real({"gravity.theta", "dimensionless",
+                    "Barnes-Hut opening angle: a cell is used whole when its size < theta x distance; 0 = exact",
+                    "theta", kTree, true},
+                   [](Params& p) -> double& { return p.gravity.theta; }, 0.0, 1.2));
   t.push_back(real({"walls.D", "length^2/time^2", "Lennard-Jones strength (seed 001 eq. 60: D ~ 5 g H); 0 = the scene's",
                     "", kLJ, true},
                    [](Params& p) -> double& { return p.walls.D; }, 0.0, 1e12));

@@ -1,4 +1,4 @@
-// Names of the kernel and integrator choices (used by JSON files, --set and the GUI).
+// Names of the kernel, integrator and softening choices (used by JSON files, --set and the GUI).
 #include "sph/params.h"
 
 namespace sph {
@@ -19,6 +19,8 @@ constexpr std::pair<const char*, IntegratorType> kIntegrators[] = {
     {"euler", IntegratorType::Euler}, {"rk4", IntegratorType::RK4},
     {"leapfrog", IntegratorType::Leapfrog}, {"predictor_corrector", IntegratorType::PredictorCorrector}};
 
+constexpr std::pair<const char*, Softening> kSoftenings[] = {{"plummer", Softening::Plummer}, {"kernel", Softening::Kernel}};
+
 template <class E, std::size_t N>
 const char* name_of(E e, const std::pair<const char*, E> (&table)[N]) {
   for (const auto& [name, value] : table)
@@ -32,5 +34,7 @@ const char* to_string(KernelType k) { return name_of(k, kKernels); }
 const char* to_string(IntegratorType i) { return name_of(i, kIntegrators); }
 bool parse(const std::string& s, KernelType& out) { return parse_enum(s, out, kKernels); }
 bool parse(const std::string& s, IntegratorType& out) { return parse_enum(s, out, kIntegrators); }
+const char* to_string(Softening s) { return name_of(s, kSoftenings); }
+bool parse(const std::string& s, Softening& out) { return parse_enum(s, out, kSoftenings); }
 
 }  // namespace sph

@@ -30,12 +30,13 @@ const Names<DensityMode> kDensity{{{"none", DensityMode::None}, {"summation", De
                                    {"continuity", DensityMode::Continuity}, {"volume", DensityMode::Volume}}};
 const Names<HMode> kSmoothing{{{"variable", HMode::Variable}, {"fixed", HMode::Fixed}, {"evolved", HMode::Evolved}}};
 const Names<EosType> kEos{{{"none", EosType::None}, {"ideal_gas", EosType::IdealGas}, {"tait", EosType::Tait},
-                           {"isothermal", EosType::Isothermal}}};
+                           {"isothermal", EosType::Isothermal}, {"polytropic", EosType::Polytropic}}};
 const Names<ForceType> kForce{{{"none", ForceType::None}, {"standard", ForceType::Standard},
                                {"corrected", ForceType::Corrected}, {"standard_corrected", ForceType::StandardCorrected}}};
 const Names<ViscType> kVisc{{{"none", ViscType::None}, {"monaghan", ViscType::Monaghan}, {"laplacian", ViscType::Laplacian}}};
 const Names<Toggle> kToggle{{{"none", Toggle::Off}, {"on", Toggle::On}}};
-const Names<BodyForce> kBody{{{"none", BodyForce::None}, {"uniform", BodyForce::Uniform}}};
+const Names<BodyForce> kBody{{{"none", BodyForce::None}, {"uniform", BodyForce::Uniform}, {"damping", BodyForce::Damping}}};
+const Names<GravityType> kGravity{{{"none", GravityType::None}, {"direct", GravityType::Direct}, {"tree", GravityType::Tree}}};
 const Names<WallType> kWalls{{{"none", WallType::None}, {"lennard_jones", WallType::LennardJones}, {"dummy", WallType::Dummy}}};
 
 bool parse_toggle(std::string_view s, Toggle& t) {
@@ -55,7 +56,9 @@ const std::array<SlotInfo, kSlotCount>& slot_table() {
        "continuity density",
        kSmoothing.options(), true},
       {Slot::Eos, "eos",
-       "equation of state: ideal gas (seed 000 eq. 3.3.23), Tait/Cole (seed 001 eq. 3), isothermal", kEos.options(), false},
+       "equation of state: ideal gas (seed 000 eq. 3.3.23), Tait/Cole (seed 001 eq. 3), isothermal, polytropic P = K rho^gamma "
+       "(seed 003 eq. 3.72)",
+       kEos.options(), false},
       {Slot::Force, "force",
        "momentum equation: standard (seed 001 eq. 44), corrected (eqs. 48-52), standard-corrected (eqs. 53-55)",
        kForce.options(), true},
@@ -67,7 +70,11 @@ const std::array<SlotInfo, kSlotCount>& slot_table() {
       {Slot::Conduction, "conduction", "artificial thermal conductivity (Price 2008) in the energy equation",
        kToggle.options(), true},
       {Slot::Energy, "energy", "internal energy equation du/dt (seed 000 eq. 3.3.19)", kToggle.options(), false},
-      {Slot::BodyForce, "body_force", "external body force: uniform gravity g", kBody.options(), true},
+      {Slot::BodyForce, "body_force", "external body force: uniform gravity g, or a damping a = -v/tau that relaxes a state",
+       kBody.options(), true},
+      {Slot::Gravity, "gravity",
+       "self-gravity: direct summation O(N^2) or a Barnes-Hut tree O(N log N) (seed 003 eq. 2.43, App. A)",
+       kGravity.options(), true},
       {Slot::Walls, "walls",
        "wall particles: Lennard-Jones repulsion (seed 001 eq. 60) or dummy particles with extrapolated pressure "
        "(Adami et al. 2012)",
@@ -89,6 +96,7 @@ std::string Physics::get(Slot s) const {
     case Slot::Conduction: return kToggle.name(conduction);
     case Slot::Energy: return kToggle.name(energy);
     case Slot::BodyForce: return kBody.name(body_force);
+    case Slot::Gravity: return kGravity.name(gravity);
     case Slot::Walls: return kWalls.name(walls);
     case Slot::Count: break;
   }
@@ -106,6 +114,7 @@ bool Physics::set(Slot s, std::string_view o) {
     case Slot::Conduction: return parse_toggle(o, conduction);
     case Slot::Energy: return parse_toggle(o, energy);
     case Slot::BodyForce: return kBody.parse(o, body_force);
+    case Slot::Gravity: return kGravity.parse(o, gravity);
     case Slot::Walls: return kWalls.parse(o, walls);
     case Slot::Count: break;
   }

@@ -9,6 +9,7 @@ class BodyForceUniform final : public Stage {
  public:
   std::string_view name() const override { return "body force: uniform g"; }
   FieldSet needs() const override { return FieldSet{}.add(Field::Mass); }
+  bool uses_neighbours() const override { return false; }
   bool run(StageContext& c) override {
     Particles& p = c.p;
     const std::size_t n = p.fluid();

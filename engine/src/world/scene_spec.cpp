@@ -13,6 +13,9 @@ SceneValues SceneSpec::default_values() const {
 
 bool SceneSpec::allows(Slot s, const std::string& option) const {
   const auto& list = allowed[static_cast<std::size_t>(s)];
+  // self-gravity needs an open domain (no periodic images: that would need Ewald sums): a scene offers
+  // it only by listing its options
+  if (s == Slot::Gravity && list.empty()) return option == "none";
   return list.empty() || std::find(list.begin(), list.end(), option) != list.end();
 }
 

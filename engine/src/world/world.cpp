@@ -112,7 +112,15 @@ void World::reorder() {
   const auto& h = p_[Field::H];
   double hmax = 0.0;
   for (std::size_t i = 0; i < n; ++i) hmax = std::max(hmax, h[i]);
-  const double cell = kernel_.support() * hmax;
+  double cell = kernel_.support() * hmax;
+  if (cell <= 0.0) {  // point masses (h = 0): cells of 1/1024 of the extent
+    double extent = 0.0;
+    for (int k = 0; k < p_.dim(); ++k) {
+      const auto [lo, hi] = std::minmax_element(p_.x[k].begin(), p_.x[k].begin() + static_cast<std::ptrdiff_t>(nf));
+      if (nf > 0) extent = std::max(extent, *hi - *lo);
+    }
+    cell = extent / 1024.0;
+  }
   std::vector<std::uint32_t> order = morton_order(p_, 0, nf, cell);
   if (by_id_.empty()) {
     const std::vector<std::uint32_t> walls = morton_order(p_, nf, n, cell);
@@ -219,7 +227,7 @@ void World::evaluate() {
   if (timings_.size() != pipeline_->stages().size() + 1) reset_timings();
   for (int attempt = 0;; ++attempt) {
     auto t0 = std::chrono::steady_clock::now();
-    prepare_neighbours();
+    if (pipeline_->uses_neighbours()) prepare_neighbours();  // pure N-body: no lists at all
     timings_[0].seconds += since(t0);
     ++timings_[0].calls;
     if (!pipeline_->sets_acceleration())
@@ -255,6 +263,7 @@ double World::next_dt() {
 #pragma omp parallel for reduction(min : dt_force, dt_move) if (n >= kParallelMin)
   for (std::size_t i = 0; i < n; ++i) {
     const double a = std::sqrt(p_.a[0][i] * p_.a[0][i] + p_.a[1][i] * p_.a[1][i] + p_.a[2][i] * p_.a[2][i]);
+    if (h[i] <= 0.0) continue;  // point masses (N-body): their stages give the limits
     if (a > 0.0) dt_force = std::min(dt_force, std::sqrt(h[i] / a));  // force condition
     const double v = p_.vel(i).norm();
     if (v > 0.0) dt_move = std::min(dt_move, h[i] / v);

@@ -1,0 +1,132 @@
+// Spheres of seed 003 with G = M = R = 1 and the density profile rho = M / (2 pi R^2 r) (eq. 2.42),
+// sampled by rejection as in §2.6: r uniform in [0, R] kept with probability r/R (the radial density
+// 4 pi r^2 rho is proportional to r), directions uniform on the sphere.
+//  - dust_sphere: pressureless collapse with Plummer softening (§2.7; N = 4000, eps = 0.1, Fig. 2.17);
+//  - dust_collision: two such spheres (§3.4.2). The seed places them 10 apart at rest (N = 1000 each),
+//    where they need t ~ 25 to meet; here they start 4 apart approaching at 0.5 each, so they collide
+//    within t = 3 (scene.separation = 10, scene.speed = 0 give the seed's set-up);
+//  - evrard: the adiabatic collapse of a cold gas sphere (Evrard 1988; §3.4.1): u = 0.05 G M / R,
+//    gamma = 5/3, alpha = 1, beta = 2, eps = 0.05, N = 4096, SPH with self-gravity.
+#include <cmath>
+#include <numbers>
+
+#include "families.h"
+#include "nbody_common.h"
+#include "scene_util.h"
+
+namespace sph::scenes {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+/// n points of the rho ~ 1/r sphere of radius R (seed 003 §2.6), deterministic for a seed.
+std::vector<Vec3> sample_sphere(std::size_t n, double R, std::uint64_t seed) {
+  Random rng(seed);
+  std::vector<Vec3> pts;
+  pts.reserve(n);
+  while (pts.size() < n) {
+    const double r = R * rng.uniform();
+    if (rng.uniform() * R > r) continue;  // rejection: accepted with probability r/R
+    const double mu = 2.0 * rng.uniform() - 1.0, phi = 2.0 * kPi * rng.uniform();
+    const double s = std::sqrt(1.0 - mu * mu);
+    pts.push_back({r * s * std::cos(phi), r * s * std::sin(phi), r * mu});
+  }
+  return pts;
+}
+
+SceneSpec sphere_base() {
+  SceneSpec s;
+  s.category = "gravity / self-gravitating spheres (seed 003)";
+  s.dim = 3;
+  return s;
+}
+
+}  // namespace
+
+SceneSpec dust_sphere_scene() {
+  SceneSpec s = sphere_base();
+  s.name = "dust_sphere";
+  s.description = "seed 003 §2.7: a pressureless sphere rho ~ 1/r collapses under its own gravity (N = 4000, eps = 0.1)";
+  s.params = {{"n", 4000, 2, 1e7, true, "number of particles"},
+              {"seed", 1, 0, 1e9, true, "random seed of the rejection sampling"}};
+  make_nbody(s, GravityType::Tree, 1.0);
+  s.defaults.gravity.eps = 0.1;  // seed 003 Fig. 2.17
+  s.defaults.time.cfl = 0.05;    // dt = 0.05 sqrt(eps / |a|): |dE/E| < 1e-4 (0.2: 4e-3)
+  s.defaults.time.t_end = 3.0;
+  s.defaults.time.dt_out = 0.1;
+  s.build = [](const Params& prm, const SceneValues& v) {
+    const auto n = static_cast<std::size_t>(v.at("n"));
+    std::vector<Body> b;
+    for (const Vec3& x : sample_sphere(n, 1.0, static_cast<std::uint64_t>(v.at("seed"))))
+      b.push_back({1.0 / static_cast<double>(n), x, {0, 0, 0}});
+    return bodies_setup(prm, 3, b, 1.2);
+  };
+  return s;
+}
+
+SceneSpec dust_collision_scene() {
+  SceneSpec s = sphere_base();
+  s.name = "dust_collision";
+  s.description = "seed 003 §3.4.2: two rho ~ 1/r dust spheres meet head-on (4 apart, approaching at 0.5 each)";
+  s.params = {{"n", 1000, 2, 1e7, true, "particles per sphere (seed: 1000)"},
+              {"separation", 4.0, 0.0, 1e3, false, "distance between the centres (seed: 10)"},
+              {"speed", 0.5, 0.0, 1e3, false, "speed of each sphere towards the other (seed: 0)"},
+              {"seed", 1, 0, 1e9, true, "random seed of the rejection sampling"}};
+  make_nbody(s, GravityType::Tree, 1.0);
+  s.defaults.gravity.eps = 0.1;
+  s.defaults.time.cfl = 0.2;
+  s.defaults.time.t_end = 3.0;
+  s.defaults.time.dt_out = 0.1;
+  s.build = [](const Params& prm, const SceneValues& v) {
+    const auto n = static_cast<std::size_t>(v.at("n"));
+    const double d = v.at("separation"), u = v.at("speed");
+    std::vector<Body> b;
+    const auto seed = static_cast<std::uint64_t>(v.at("seed"));
+    for (const Vec3& x : sample_sphere(n, 1.0, seed)) b.push_back({0.5 / n, x + Vec3{-0.5 * d, 0, 0}, {u, 0, 0}});
+    for (const Vec3& x : sample_sphere(n, 1.0, seed + 1)) b.push_back({0.5 / n, x + Vec3{0.5 * d, 0, 0}, {-u, 0, 0}});
+    return bodies_setup(prm, 3, b, 0.5 * d + 1.5);
+  };
+  return s;
+}
+
+SceneSpec evrard_scene() {
+  SceneSpec s = sphere_base();
+  s.name = "evrard";
+  s.description = "seed 003 §3.4.1 (Evrard 1988): a cold gas sphere rho ~ 1/r collapses, bounces and heats (N = 4096)";
+  s.params = {{"n", 4096, 8, 1e7, true, "number of particles (seed: 4096)"},
+              {"u0", 0.05, 0.0, 10.0, false, "initial specific internal energy [G M / R] (seed: 0.05)"},
+              {"seed", 1, 0, 1e9, true, "random seed of the rejection sampling"}};
+  Params& d = s.defaults;
+  d.physics.gravity = GravityType::Tree;
+  d.gravity.G = 1.0;
+  d.gravity.eps = 0.05;  // seed 003 §3.4.1
+  d.gas.gamma = 5.0 / 3.0;
+  d.visc.alpha = 1.0;
+  d.visc.beta = 2.0;
+  d.time.integrator = IntegratorType::Leapfrog;
+  d.time.t_end = 3.0;
+  d.time.dt_out = 0.1;
+  s.allow(Slot::Eos, {"ideal_gas"});
+  s.allow(Slot::Walls, {"none"});
+  s.allow(Slot::Gravity, {"tree", "direct"});
+  s.build = [](const Params& prm, const SceneValues& v) {
+    const auto n = static_cast<std::size_t>(v.at("n"));
+    const std::vector<Vec3> pts = sample_sphere(n, 1.0, static_cast<std::uint64_t>(v.at("seed")));
+    Particles p = make_particles(prm, 3, n);
+    const double m = 1.0 / static_cast<double>(n), eta = effective_eta(prm, 3);
+    for (std::size_t i = 0; i < n; ++i) {
+      p.x[0][i] = pts[i].x; p.x[1][i] = pts[i].y; p.x[2][i] = pts[i].z;
+      p[Field::Mass][i] = m;
+      const double rho = 1.0 / (2.0 * kPi * std::max(pts[i].norm(), 0.01));  // eq. 2.42: the first h guess
+      p[Field::H][i] = eta * std::cbrt(m / rho);
+      if (p.has(Field::Energy)) p[Field::Energy][i] = v.at("u0");
+    }
+    SceneSetup out{std::move(p), {}, std::cbrt(4.0 * kPi / 3.0 / static_cast<double>(n)), 0.0};
+    out.domain.lo = {-1.5, -1.5, -1.5};
+    out.domain.hi = {1.5, 1.5, 1.5};
+    return out;
+  };
+  return s;
+}
+
+}  // namespace sph::scenes

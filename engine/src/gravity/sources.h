@@ -1,0 +1,39 @@
+// What the gravity solvers read (the real particles 0..n-1 of a store: masses, positions, h) and what
+// they write (accelerations and potentials per unit G, and the shortest pair dynamical time).
+#pragma once
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "sph/particles.h"
+
+namespace sph::gravity {
+
+struct Sources {
+  const std::array<std::vector<double>, 3>& x;
+  const std::vector<double>& m;
+  const std::vector<double>& h;
+  std::size_t n;  ///< particles 0..n-1 attract each other
+  int dim;
+  static Sources of(const Particles& p) { return {p.x, p[Field::Mass], p[Field::H], p.fluid(), p.dim()}; }
+};
+
+struct Result {
+  std::array<std::vector<double>, 3> a;  ///< acceleration [length/time^2]
+  std::vector<double> phi;               ///< potential [length^2/time^2]
+  /// per particle, a lower bound of the smallest r_eff^3 / (G (m_i + m_j)) over the pairs summed one by
+  /// one [time^2] (the smallest r_eff with the largest m_j): the square of a two-body dynamical time
+  /// (r_eff^2 = r^2 + softening^2); exact for two bodies
+  std::vector<double> t2_pair;
+  std::size_t pair_terms = 0, node_terms = 0;  ///< interactions evaluated (for benchmarks)
+  void resize(std::size_t n);
+};
+
+inline void Result::resize(std::size_t n) {
+  for (auto& c : a) c.assign(n, 0.0);
+  phi.assign(n, 0.0);
+  t2_pair.assign(n, 1e300);
+  pair_terms = node_terms = 0;
+}
+
+}  // namespace sph::gravity

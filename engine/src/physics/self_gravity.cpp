@@ -1,0 +1,118 @@
+// Self-gravity (seed 003 eqs. 2.3, 2.43; App. A): a += -G sum_j m_j f(r_ij) (x_i - x_j) by direct
+// summation or a Barnes-Hut tree, with Plummer or kernel softening; phi_i is stored for display and the
+// potential energy E_pot = 1/2 sum m_i phi_i (seed 003 eq. 2.8). It needs no neighbour lists.
+// Timestep limits: sqrt(eps / |a|) for Plummer softening (the world applies sqrt(h/|a|) to h > 0), and
+// the shortest two-body dynamical time sqrt(r^3 / (G (m_i + m_j))) over the pairs summed one by one,
+// which resolves close encounters and orbits of point masses (a fraction of it, by the Courant factor).
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <optional>
+
+#include "core/parallel.h"
+#include "core/stages.h"
+#include "gravity/barnes_hut.h"
+#include "gravity/direct_sum.h"
+
+namespace sph {
+namespace {
+
+class SelfGravity final : public Stage {
+ public:
+  explicit SelfGravity(GravityType type) : type_(type) {}
+  std::string_view name() const override {
+    return type_ == GravityType::Tree ? "self-gravity: Barnes-Hut tree" : "self-gravity: direct summation";
+  }
+  FieldSet needs() const override { return FieldSet{}.add(Field::Mass).add(Field::H); }
+  FieldSet writes() const override { return FieldSet{}.add(Field::Potential); }
+  bool uses_neighbours() const override { return false; }
+
+  bool run(StageContext& c) override {
+    Particles& p = c.p;
+    solve(c, p, out_);
+    const std::size_t n = p.fluid();
+    for (int k = 0; k < 3; ++k) {
+      auto& a = p.a[k];
+      const auto& g = out_.a[k];
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+      for (std::size_t i = 0; i < n; ++i) a[i] += g[i];
+    }
+    std::copy(out_.phi.begin(), out_.phi.end(), p[Field::Potential].begin());
+    for (int k = 0; k < 3; ++k) x_eval_[k].assign(p.x[k].begin(), p.x[k].begin() + static_cast<std::ptrdiff_t>(n));
+    return true;
+  }
+
+  double dt_limit(const StageContext& c) const override {
+    const Particles& p = c.p;
+    const std::size_t n = std::min(p.fluid(), out_.t2_pair.size());
+    const bool plummer = c.prm.gravity.softening == Softening::Plummer && c.prm.gravity.eps > 0.0;
+    const double eps = c.prm.gravity.eps;
+    double t2 = kNoLimit;  // a minimum: the same for any thread count
+#pragma omp parallel for reduction(min : t2) if (n >= kParallelMin)
+    for (std::size_t i = 0; i < n; ++i) {
+      t2 = std::min(t2, out_.t2_pair[i]);
+      if (!plummer) continue;
+      const double a2 = p.a[0][i] * p.a[0][i] + p.a[1][i] * p.a[1][i] + p.a[2][i] * p.a[2][i];
+      if (a2 > 0.0) t2 = std::min(t2, eps / std::sqrt(a2));
+    }
+    return t2 < 1e299 ? std::sqrt(t2) : kNoLimit;
+  }
+
+  double potential(const StageContext& c) const override {
+    const Particles& p = c.p;
+    const std::size_t n = p.fluid();
+    const auto& m = p[Field::Mass];
+    const std::vector<double>* phi = &out_.phi;
+    if (!evaluated_at(p)) {  // the last evaluation was at another state (an RK4 sub-step)
+      solve(c, p, scratch_);
+      phi = &scratch_.phi;
+    }
+    double e = 0.0;  // serial: the same for any thread count
+    for (std::size_t i = 0; i < n; ++i) e += 0.5 * m[i] * (*phi)[i];
+    return e;
+  }
+
+ private:
+  /// Accelerations and potentials for the current positions.
+  void solve(const StageContext& c, const Particles& p, gravity::Result& out) const {
+    const GravityParams& g = c.prm.gravity;
+    gravity::PairLaw law;
+    law.kind = g.softening;
+    law.eps2 = g.eps * g.eps;
+    if (g.softening == Softening::Kernel) {
+      if (!kernel_ || kernel_type_ != c.prm.kernel.type) {
+        kernel_.emplace(c.prm.kernel.type);
+        kernel_type_ = c.prm.kernel.type;
+      }
+      law.kernel = &*kernel_;
+    }
+    const gravity::Sources s = gravity::Sources::of(p);
+    if (type_ == GravityType::Direct) {
+      gravity::direct_sum(s, law, g.G, out);
+    } else {
+      tree_.build(s);
+      tree_.evaluate(s, law, g.G, g.theta, out);
+    }
+  }
+  bool evaluated_at(const Particles& p) const {
+    const std::size_t n = p.fluid();
+    for (int k = 0; k < 3; ++k)
+      if (x_eval_[k].size() != n || !std::equal(x_eval_[k].begin(), x_eval_[k].end(), p.x[k].begin())) return false;
+    return true;
+  }
+
+  GravityType type_;
+  gravity::Result out_;
+  std::array<std::vector<double>, 3> x_eval_;  ///< positions of the last evaluation
+  // caches of const methods (diagnostics run on the thread that steps)
+  mutable gravity::Result scratch_;
+  mutable gravity::BarnesHutTree tree_;
+  mutable std::optional<gravity::KernelSoftening> kernel_;
+  mutable KernelType kernel_type_ = KernelType::M4;
+};
+
+}  // namespace
+
+std::unique_ptr<Stage> make_self_gravity(GravityType type) { return std::make_unique<SelfGravity>(type); }
+
+}  // namespace sph

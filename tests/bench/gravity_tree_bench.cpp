@@ -1,0 +1,119 @@
+// Barnes-Hut against direct summation on a Plummer sphere (softening 0.01 of its scale): the cost of a
+// tree build plus walk from N = 1e3 to 1e5 (with the interactions per particle, so the N log N growth
+// shows), and its force error against direct summation at theta = 0.3, 0.5, 0.7, 1.0 (on a sample of
+// 1000 particles for large N: direct summation for those targets only).
+// Usage: gravity_tree_bench [N ...]   (default 1000 3000 10000 30000 100000)
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <numbers>
+#include <vector>
+
+#include "gravity/barnes_hut.h"
+#include "gravity/direct_sum.h"
+
+using namespace sph;
+using namespace sph::gravity;
+
+namespace {
+
+Particles plummer(std::size_t n) {
+  Particles p(3, n, FieldSet{}.add(Field::Mass).add(Field::H));
+  std::uint64_t s = 12345;
+  auto u = [&] {
+    std::uint64_t z = (s += 0x9e3779b97f4a7c15ull);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return static_cast<double>((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    double r;
+    do r = 1.0 / std::sqrt(std::pow(u(), -2.0 / 3.0) - 1.0); while (r > 10.0);
+    const double mu = 2 * u() - 1, ph = 2 * std::numbers::pi * u(), st = std::sqrt(1 - mu * mu);
+    p.x[0][i] = r * st * std::cos(ph);
+    p.x[1][i] = r * st * std::sin(ph);
+    p.x[2][i] = r * mu;
+    p[Field::Mass][i] = 1.0 / static_cast<double>(n);
+    p[Field::H][i] = 0.0;
+  }
+  return p;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+/// Direct accelerations of the sample targets only.
+std::vector<std::array<double, 3>> direct_at(const Particles& p, const std::vector<std::size_t>& targets, double eps2) {
+  std::vector<std::array<double, 3>> a(targets.size());
+  const auto& m = p[Field::Mass];
+#pragma omp parallel for schedule(dynamic, 8)
+  for (std::size_t t = 0; t < targets.size(); ++t) {
+    const std::size_t i = targets[t];
+    double ax = 0, ay = 0, az = 0;
+    for (std::size_t j = 0; j < p.size(); ++j) {
+      if (j == i) continue;
+      const double dx = p.x[0][i] - p.x[0][j], dy = p.x[1][i] - p.x[1][j], dz = p.x[2][i] - p.x[2][j];
+      const double inv = 1.0 / std::sqrt(dx * dx + dy * dy + dz * dz + eps2), f = m[j] * inv * inv * inv;
+      ax -= f * dx; ay -= f * dy; az -= f * dz;
+    }
+    a[t] = {ax, ay, az};
+  }
+  return a;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::size_t> sizes;
+  for (int k = 1; k < argc; ++k) sizes.push_back(static_cast<std::size_t>(std::atof(argv[k])));
+  if (sizes.empty()) sizes = {1000, 3000, 10000, 30000, 100000};
+  const double eps = 0.01;
+  PairLaw law;
+  law.eps2 = eps * eps;
+  std::printf("Plummer sphere, eps = %.2g, %d threads; error = |a_tree - a_direct| / |a_direct| over %s\n", eps,
+              omp_get_max_threads(), "min(N, 1000) sample particles");
+  std::printf("%8s %6s %10s %10s %12s %12s %10s %10s %10s\n", "N", "theta", "build s", "walk s", "terms/part",
+              "ns/term", "rms err", "99% err", "max err");
+  for (std::size_t n : sizes) {
+    const Particles p = plummer(n);
+    const Sources s = Sources::of(p);
+    std::vector<std::size_t> sample;
+    const std::size_t stride = std::max<std::size_t>(1, n / 1000);
+    for (std::size_t i = 0; i < n; i += stride) sample.push_back(i);
+    const auto exact = direct_at(p, sample, law.eps2);
+    for (double theta : {0.3, 0.5, 0.7, 1.0}) {
+      BarnesHutTree t;
+      Result r;
+      auto t0 = std::chrono::steady_clock::now();
+      t.build(s);
+      const double build = seconds_since(t0);
+      t0 = std::chrono::steady_clock::now();
+      t.evaluate(s, law, 1.0, theta, r);
+      const double walk = seconds_since(t0);
+      std::vector<double> err;
+      for (std::size_t k = 0; k < sample.size(); ++k) {
+        const std::size_t i = sample[k];
+        double d2 = 0, b2 = 0;
+        for (int c = 0; c < 3; ++c) {
+          d2 += (r.a[c][i] - exact[k][c]) * (r.a[c][i] - exact[k][c]);
+          b2 += exact[k][c] * exact[k][c];
+        }
+        err.push_back(std::sqrt(d2 / b2));
+      }
+      std::sort(err.begin(), err.end());
+      double rms = 0;
+      for (double e : err) rms += e * e;
+      rms = std::sqrt(rms / static_cast<double>(err.size()));
+      const double terms = static_cast<double>(r.pair_terms + r.node_terms);
+      std::printf("%8zu %6.2f %10.4f %10.4f %12.1f %12.2f %10.2e %10.2e %10.2e\n", n, theta, build, walk,
+                  terms / static_cast<double>(n), 1e9 * walk / terms * omp_get_max_threads(),
+                  rms, err[static_cast<std::size_t>(0.99 * static_cast<double>(err.size() - 1))], err.back());
+    }
+  }
+  return 0;
+}
