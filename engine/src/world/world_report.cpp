@@ -135,8 +135,11 @@ Snapshot World::snapshot() const {
   // the fields of earlier versions first, in their order; then the other display fields of the stages
   const Field first[] = {Field::Density, Field::Pressure, Field::Energy, Field::H, Field::SoundSpeed, Field::Neighbours,
                          Field::Omega};
+  // point masses (pure N-body) have h = 0 everywhere: nothing to colour by, so h is left out
+  const bool point_masses = !p_.has(Field::Density) && std::all_of(p_[Field::H].begin(), p_[Field::H].begin() +
+                                                                   static_cast<std::ptrdiff_t>(n), [](double h) { return h == 0.0; });
   for (Field fld : first)
-    if (p_.has(fld)) add_field(fld);
+    if (p_.has(fld) && !(fld == Field::H && point_masses)) add_field(fld);
   for (std::size_t k = 0; k < kFieldCount; ++k) {
     const Field fld = static_cast<Field>(k);
     if (p_.has(fld) && info(fld).display && std::find(std::begin(first), std::end(first), fld) == std::end(first))
