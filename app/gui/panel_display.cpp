@@ -8,25 +8,35 @@
 #include <string_view>
 
 #include "colormap.h"
+#include "profile_axis.h"
 #include "panels.h"
 
 namespace sph::gui {
 
 namespace {
 
-// 2D: the plane, or a profile of the field against x or y (render::ViewSettings::profile_axis).
-void panel_view_kind(render::ViewSettings& v) {
-  const char* kNames[3] = {"plane", "profile against x", "profile against y"};
-  const int current = std::clamp(v.profile_axis + 1, 0, 2);
-  if (ImGui::BeginCombo("view", kNames[current])) {
-    for (int k = 0; k < 3; ++k)
-      if (ImGui::Selectable(kNames[k], k == current)) v.profile_axis = k - 1;
+// 2D: the plane, or a profile of the field against x, y or r; 3D: the particles or a profile against r
+// (render::ViewSettings::profile_axis).
+void panel_view_kind(render::ViewSettings& v, int dim) {
+  struct Kind { const char* name; int axis; };
+  const Kind k2[4] = {{"plane", -1}, {"profile against x", 0}, {"profile against y", 1},
+                      {"profile against r", render::kRadialAxis}};
+  const Kind k3[2] = {{"3D view", -1}, {"profile against r", render::kRadialAxis}};
+  const Kind* kinds = dim == 2 ? k2 : k3;
+  const int count = dim == 2 ? 4 : 2;
+  int current = 0;
+  for (int k = 0; k < count; ++k)
+    if (kinds[k].axis == v.profile_axis) current = k;
+  if (ImGui::BeginCombo("view", kinds[current].name)) {
+    for (int k = 0; k < count; ++k)
+      if (ImGui::Selectable(kinds[k].name, k == current)) v.profile_axis = kinds[k].axis;
     ImGui::EndCombo();
   }
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("plane: the particles where they are.\n"
-                      "profile: the field (y axis) against x or y, one dot per fluid particle, with the\n"
-                      "scene's reference curve along that axis (e.g. hydrostatic pressure against y).");
+    ImGui::SetTooltip("plane / 3D view: the particles where they are.\n"
+                      "profile: the field (y axis) against x, y or the distance r from the origin, one dot per\n"
+                      "fluid particle, with the scene's reference curve along that axis (hydrostatic pressure\n"
+                      "against y, the Lane-Emden density against r).");
 }
 
 bool has_walls(const Snapshot& snap) {
@@ -61,7 +71,7 @@ void panel_display(GuiState& s) {
   if (f == nullptr) return;
   const Snapshot& snap = f->snapshot;
   const SnapshotField* shown = snap.find(v.color_by);
-  const bool profile = snap.dim == 1 || (snap.dim == 2 && v.profile_axis >= 0);
+  const bool profile = render::draws_profile(snap.dim, v.profile_axis);
   if (ImGui::BeginCombo(profile ? "plot / colour" : "colour by", shown ? shown->label.c_str() : v.color_by.c_str())) {
     for (const SnapshotField& fld : snap.fields)
       if (ImGui::Selectable(fld.label.c_str(), fld.name == v.color_by)) v.color_by = fld.name;
@@ -91,7 +101,7 @@ void panel_display(GuiState& s) {
       v.range_max = r[1];
     }
   }
-  if (snap.dim == 2) panel_view_kind(v);
+  if (snap.dim >= 2) panel_view_kind(v, snap.dim);
   if (profile) {
     if (!snap.exact.empty()) {
       ImGui::Checkbox("exact solution", &v.show_exact);

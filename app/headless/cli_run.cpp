@@ -15,6 +15,7 @@
 #ifdef SPH_HAVE_FRAMES
 #include "frame_recorder.h"
 #include "frame_size.h"
+#include "profile_axis.h"
 #include "progress.h"
 #endif
 
@@ -111,7 +112,7 @@ int run_command(const RunOptions& opt) {
         }
       }
       rec = make_recorder(opt);  // validates the frame flags before anything is written
-      if (rec && rec->view().profile_axis >= 0 && cfg.scene->dim != 2)
+      if (rec && rec->view().profile_axis >= 0 && !render::draws_profile(cfg.scene->dim, rec->view().profile_axis))
         std::fprintf(stderr, "sph: note: %s applies to 2D scenes; %s is %dD, so it is ignored\n",
                      flag::kProfileAxis, cfg.scene->name.c_str(), cfg.scene->dim);
     } catch (const ConfigError& e) {

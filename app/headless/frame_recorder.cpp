@@ -225,7 +225,7 @@ std::unique_ptr<FrameRecorder> FrameRecorder::create(const FrameOptions& o, std:
     return nullptr;
   }
   if (!render::parse_profile_axis(o.profile_axis)) {
-    fail(err, std::string(flag::kProfileAxis) + ": unknown axis '" + o.profile_axis + "' (choose x, y or off)");
+    fail(err, std::string(flag::kProfileAxis) + ": unknown axis '" + o.profile_axis + "' (choose x, y, r or off)");
     return nullptr;
   }
   if (o.color_by.empty()) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "profile_axis.h"
 #include "sph/snapshot.h"
 
 namespace sph::render {
@@ -26,7 +27,12 @@ void build_instances(const sph::Snapshot& snap, const ShownField& shown, const I
     if (wall && !keep_walls) continue;
     const float value = values ? at(*values, i, kNaN) : kNaN;
     if (profile) {
-      p[0] = at(along, i, 0.f);
+      if (o.axis == kRadialAxis) {
+        const float x = snap.x[i], y = at(snap.y, i, 0.f), z = at(snap.z, i, 0.f);
+        p[0] = std::sqrt(x * x + y * y + z * z);
+      } else {
+        p[0] = at(along, i, 0.f);
+      }
       p[1] = std::isfinite(value) ? value : 0.f;
       p[2] = 0.f;
     } else {

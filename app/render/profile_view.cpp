@@ -49,17 +49,40 @@ void y_limits(const ShownField& shown, const sph::ExactCurve* curve, const ViewS
 
 void compose_profile(FrameBuild& f, const sph::Snapshot& snap, const ViewSettings& view, const ShownField& shown,
                      int axis) {
-  axis = std::clamp(axis, 0, 2);
+  axis = std::clamp(axis, 0, kRadialAxis);
+  if (axis == 2) axis = 0;
   FrameLayout& L = f.layout;
   const int s = L.text_scale;
   const float lh = f.text.line_height(s);
   const Bounds b = view_bounds(snap);
   AxesRanges r;
-  const float c0 = b[2 * axis], c1 = b[2 * axis + 1];  // the coordinate's extent
+  float c0 = 0.f, c1 = 0.f;  // the coordinate's extent
+  if (axis == kRadialAxis) {
+    for (std::size_t i = 0; i < snap.x.size(); ++i) {
+      const float x = snap.x[i], y = i < snap.y.size() ? snap.y[i] : 0.f, z = i < snap.z.size() ? snap.z[i] : 0.f;
+      const float rr = std::sqrt(x * x + y * y + z * z);
+      if (std::isfinite(rr)) c1 = std::max(c1, rr);
+    }
+    if (!(c1 > 0.f)) c1 = 1.f;
+  } else {
+    c0 = b[2 * axis];
+    c1 = b[2 * axis + 1];
+  }
   const double dx = kXPad * (c1 - c0);
   r.x0 = c0 - dx;
   r.x1 = c1 + dx;
   const sph::ExactCurve* curve = shown_curve(snap, view, shown, axis);
+  sph::ExactCurve log_curve;  // with the log10 scale, the reference in the same units (points <= 0 left out)
+  if (curve != nullptr && view.log_scale) {
+    log_curve.field = curve->field;
+    log_curve.axis = curve->axis;
+    for (std::size_t i = 0; i < curve->x.size() && i < curve->value.size(); ++i)
+      if (curve->value[i] > 0.f) {
+        log_curve.x.push_back(curve->x[i]);
+        log_curve.value.push_back(std::log10(curve->value[i]));
+      }
+    curve = log_curve.x.size() >= 2 ? &log_curve : nullptr;
+  }
   y_limits(shown, curve, view, r.y0, r.y1);
 
   // Two passes: the y labels' width depends on the box height, which depends on the labels.

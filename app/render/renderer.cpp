@@ -10,6 +10,7 @@
 #include "palette.h"
 #include "particle_pass.h"
 #include "plane_view.h"
+#include "profile_axis.h"
 #include "profile_view.h"
 #include "sph/snapshot.h"
 
@@ -110,7 +111,7 @@ void Renderer::compose(FrameBuild& f, const sph::Snapshot& snap, const ViewSetti
   layout_chrome(f, shown, width, height, view.text_scale);
   if (snap.dim == 1)
     compose_profile(f, snap, view, shown, 0);
-  else if (snap.dim == 2 && (view.profile_axis == 0 || view.profile_axis == 1))
+  else if (draws_profile(snap.dim, view.profile_axis))
     compose_profile(f, snap, view, shown, view.profile_axis);
   else if (snap.dim == 3)
     compose_orbit(f, snap, view, shown);

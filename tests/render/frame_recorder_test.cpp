@@ -94,16 +94,16 @@ TEST_F(FrameRecorderTest, ValidationNamesTheFlag) {
   EXPECT_NE(err.find("--frames"), std::string::npos) << err;
 }
 
-TEST_F(FrameRecorderTest, ProfileAxisIsXYOrOff) {
+TEST_F(FrameRecorderTest, ProfileAxisIsXYROrOff) {
   std::string err;
   FrameOptions o = options();
   for (const char* bad : {"z", "", "X", "yes"}) {
     o.profile_axis = bad;
     EXPECT_EQ(FrameRecorder::create(o, &err), nullptr) << bad;
     EXPECT_NE(err.find("--profile-axis"), std::string::npos) << err;
-    EXPECT_NE(err.find("x, y or off"), std::string::npos) << err;
+    EXPECT_NE(err.find("x, y, r or off"), std::string::npos) << err;
   }
-  for (auto [name, axis] : {std::pair{"off", -1}, {"x", 0}, {"y", 1}}) {
+  for (auto [name, axis] : {std::pair{"off", -1}, {"x", 0}, {"y", 1}, {"r", 3}}) {
     o.profile_axis = name;
     auto rec = FrameRecorder::create(o, &err);
     ASSERT_NE(rec, nullptr) << err;

@@ -23,7 +23,7 @@ struct ExactCurve {
   std::string field;        ///< same key as SnapshotField::name
   std::vector<float> x;     ///< abscissae, increasing
   std::vector<float> value; ///< reference value at x
-  int axis = 0;             ///< which coordinate x is
+  int axis = 0;             ///< which coordinate x is: 0..2, or 3 for the distance r from the origin
 };
 
 /// A reference shape in the plane (world coordinates), e.g. the exact ellipse of a drop or a measured

@@ -50,6 +50,20 @@ class PolytropeReference final : public Reference {
            "and the virial ratio 3 sum m P/rho / |W| (eq. 3.79)";
   }
   int primary() const override { return 1; }
+  /// The Lane-Emden density against r (the profile view "r" draws it over the particles).
+  ReferenceCurves curves(const Domain&, double) const override {
+    ReferenceCurves c;
+    ExactCurve e;
+    e.field = "rho";
+    e.axis = 3;  // the distance from the origin
+    for (int k = 0; k <= 200; ++k) {
+      const double r = s_.R * k / 200.0;
+      e.x.push_back(static_cast<float>(r));
+      e.value.push_back(static_cast<float>(s_.rho_c * std::pow(le_.theta(r / s_.alpha), le_.n())));
+    }
+    c.profiles.push_back(std::move(e));
+    return c;
+  }
 
  private:
   LaneEmden le_;
