@@ -52,7 +52,7 @@ void panel_diagnostics(GuiState& s) {
   if (ImGui::BeginTable("numbers", 2)) {
     row("E_kin", "%.6g", d.E_kin, "kinetic energy, sum 1/2 m v^2 (seed 000 eq. 3.4.4)");
     row("E_int", "%.6g", d.E_int, "internal energy of the EOS: sum m u (gas), sum m e(rho) (Tait liquid)");
-    row("E_pot", "%.6g", d.E_pot, "potential energy of the body force and the Lennard-Jones walls");
+    row("E_pot", "%.6g", d.E_pot, "potential energy of the body force, the Lennard-Jones walls and self-gravity (1/2 sum m phi)");
     row("E_tot", "%.6g", d.E_tot, "total energy (seed 000 eq. 3.4.5): conserved without boundaries that do work");
     row("dE/E0", "%+.2e", dE, "relative change of E_tot since t = 0");
     row("|P|", "%.3e", P, "linear momentum, |sum m v| (seed 000 eq. 3.4.1); walls exchange momentum");
@@ -92,8 +92,15 @@ void panel_diagnostics(GuiState& s) {
     ImGui::PlotLines("##err", y.data(), static_cast<int>(y.size()), 0, overlay, FLT_MAX, FLT_MAX,
                      ImVec2(ImGui::GetContentRegionAvail().x, ph));
   }
+  {  // the energies on one set of axes, as seed 003's figures show them (the sparkline below magnifies E_tot)
+    const float t0 = h.empty() ? 0.f : static_cast<float>(h.front().t), t1 = h.empty() ? 1.f : static_cast<float>(h.back().t);
+    std::vector<Curve> curves{{"E_kin", IM_COL32(255, 200, 80, 255), resample(h, &HistorySample::E_kin, 240), false},
+                              {"E_int", IM_COL32(255, 110, 110, 255), resample(h, &HistorySample::E_int, 240), false},
+                              {"E_pot", IM_COL32(120, 200, 255, 255), resample(h, &HistorySample::E_pot, 240), false},
+                              {"E_tot", IM_COL32(230, 230, 230, 255), resample(h, &HistorySample::E_tot, 240), true}};
+    curve_plot("energies", "t", t0, t1, curves, ImVec2(-1.f, ph));
+  }
   plot(h, &HistorySample::E_tot, "E_tot", ph);
-  plot(h, &HistorySample::E_kin, "E_kin", ph);
   plot(h, &HistorySample::P, "|P|", ph);
   if (!h.empty()) ImGui::TextDisabled("against t = %.4g ... %.4g  (%zu samples)", h.front().t, h.back().t, h.size());
   ImGui::EndTable();

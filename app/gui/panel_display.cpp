@@ -9,6 +9,7 @@
 
 #include "colormap.h"
 #include "profile_axis.h"
+#include "trails.h"
 #include "panels.h"
 
 namespace sph::gui {
@@ -90,6 +91,10 @@ void panel_display(GuiState& s) {
     v.range_max = shown->max;
   }
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("On: every frame uses the field's min..max. Off: a fixed range.");
+  if (render::Trails::applies(snap)) {
+    ImGui::Checkbox("orbit trails", &v.show_trails);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Each body's path so far (restarts on reset)");
+  }
   ImGui::Checkbox("log10 scale", &v.log_scale);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("Colour (and the profile's y axis) by log10 of the field: for densities spanning decades\n"

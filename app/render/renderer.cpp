@@ -13,6 +13,7 @@
 #include "profile_axis.h"
 #include "profile_view.h"
 #include "sph/snapshot.h"
+#include "trails.h"
 
 namespace sph::render {
 
@@ -23,6 +24,8 @@ struct Renderer::Impl {
   OverlayPass overlay;
   FrameBuild frame{font};  // reused between frames (keeps its buffers' capacity)
   sph::SnapshotField log_field;  // the shown field as log10, when the view asks for it
+  Trails trails;                 // orbit trails of the few-body scenes
+  sph::Snapshot decorated;       // a snapshot with its trails added
   bool ready = false;
 };
 
@@ -100,8 +103,15 @@ void Renderer::shutdown() {
 void Renderer::render(const sph::Snapshot& snap, const ViewSettings& view, int width, int height) {
   Impl& d = *impl_;
   if (!d.ready || width <= 0 || height <= 0) return;
-  const ShownField shown = choose_field(snap, view, &d.log_field);
-  compose(d.frame, snap, view, shown, width, height);
+  const sph::Snapshot* s = &snap;
+  if (view.show_trails && Trails::applies(snap)) {
+    d.trails.record(snap);
+    d.decorated = snap;
+    d.trails.decorate(d.decorated);
+    s = &d.decorated;
+  }
+  const ShownField shown = choose_field(*s, view, &d.log_field);
+  compose(d.frame, *s, view, shown, width, height);
   draw(d, shown, width, height);
 }
 

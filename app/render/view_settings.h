@@ -33,6 +33,7 @@ struct ViewSettings {
   std::string cmap = "viridis";  ///< viridis, magma, cividis, coolwarm
   bool auto_range = true;        ///< per frame: the field's min/max; else [range_min, range_max]
   float range_min = 0.f, range_max = 1.f;  ///< fixed range [field units] (log10 of them with log_scale)
+  bool show_trails = true;       ///< few-body 2D scenes: draw each particle's path so far (render::Trails)
   bool log_scale = false;        ///< colour (and profile axis) by log10 of the field; values <= 0 are not drawn
 
   Camera2D camera2d;
