@@ -10,38 +10,16 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <numbers>
 #include <vector>
 
 #include "gravity/barnes_hut.h"
 #include "gravity/direct_sum.h"
+#include "gravity_test_util.h"
 
 using namespace sph;
 using namespace sph::gravity;
 
 namespace {
-
-Particles plummer(std::size_t n) {
-  Particles p(3, n, FieldSet{}.add(Field::Mass).add(Field::H));
-  std::uint64_t s = 12345;
-  auto u = [&] {
-    std::uint64_t z = (s += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return static_cast<double>((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
-  };
-  for (std::size_t i = 0; i < n; ++i) {
-    double r;
-    do r = 1.0 / std::sqrt(std::pow(u(), -2.0 / 3.0) - 1.0); while (r > 10.0);
-    const double mu = 2 * u() - 1, ph = 2 * std::numbers::pi * u(), st = std::sqrt(1 - mu * mu);
-    p.x[0][i] = r * st * std::cos(ph);
-    p.x[1][i] = r * st * std::sin(ph);
-    p.x[2][i] = r * mu;
-    p[Field::Mass][i] = 1.0 / static_cast<double>(n);
-    p[Field::H][i] = 0.0;
-  }
-  return p;
-}
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -80,7 +58,7 @@ int main(int argc, char** argv) {
   std::printf("%8s %6s %10s %10s %12s %12s %10s %10s %10s\n", "N", "theta", "build s", "walk s", "terms/part",
               "ns/term", "rms err", "99% err", "max err");
   for (std::size_t n : sizes) {
-    const Particles p = plummer(n);
+    const Particles p = sph::test::sphere(n, true, 12345, 0.0);
     const Sources s = Sources::of(p);
     std::vector<std::size_t> sample;
     const std::size_t stride = std::max<std::size_t>(1, n / 1000);
