@@ -106,6 +106,12 @@ void GuiState::set_stop_at_end(bool on) {
   stepper_.set_stop_at_end(on);
 }
 
+void GuiState::set_tree_probe(std::int64_t k) {
+  tree_probe = k;
+  if (k >= 0) tree_probe_pick = static_cast<int>(k);
+  stepper_.set_tree_probe(k);
+}
+
 void GuiState::notify(std::string text, bool error) {
   message = std::move(text);
   message_is_error = error;

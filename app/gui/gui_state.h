@@ -53,9 +53,13 @@ class GuiState {
   void step_once() { stepper_.step_once(); }
   void set_real_time_factor(double f);
   void set_stop_at_end(bool on);
+  /// Frames carry particle k's Barnes-Hut walk (the tree overlay); k < 0 turns it off.
+  void set_tree_probe(std::int64_t k);
   void set_record_interval(double every) { stepper_.set_record_interval(every); }
   double real_time_factor = 0.0;   ///< as last sent (0 = as fast as possible)
   bool stop_at_end = true;         ///< as last sent
+  std::int64_t tree_probe = -1;    ///< as last sent (-1: no tree overlay)
+  int tree_probe_pick = 0;         ///< the particle the overlay shows when switched on
 
   // --- view and user requests --------------------------------------------------------------------------
   render::ViewSettings view;

@@ -95,6 +95,19 @@ void panel_display(GuiState& s) {
     ImGui::Checkbox("orbit trails", &v.show_trails);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Each body's path so far (restarts on reset)");
   }
+  if (f->config.params.physics.gravity == GravityType::Tree && snap.dim >= 2 && !profile && snap.count > 0) {
+    bool on = s.tree_probe >= 0;
+    if (ImGui::Checkbox("tree cells", &on)) s.set_tree_probe(on ? s.tree_probe_pick : -1);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("What the Barnes-Hut tree opens for one particle (white ring) at the current theta:\n"
+                        "blue cells act on it as one multipole each, amber leaves particle by particle.\n"
+                        "Change gravity.theta and watch the cells shrink or grow.");
+    if (on) {
+      int k = s.tree_probe_pick;
+      if (ImGui::InputInt("probe particle", &k)) s.set_tree_probe(std::clamp<std::int64_t>(k, 0, snap.count - 1));
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("Index of the particle whose tree walk is drawn (0..N-1)");
+    }
+  }
   ImGui::Checkbox("log10 scale", &v.log_scale);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("Colour (and the profile's y axis) by log10 of the field: for densities spanning decades\n"

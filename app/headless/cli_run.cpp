@@ -104,6 +104,12 @@ int run_command(const RunOptions& opt) {
     try {
       if (!opt.frames.empty()) {  // refuse an unknown field before anything is written
         const Snapshot snap = world.snapshot();
+        if (opt.tree_probe >= 0 && cfg.params.physics.gravity != GravityType::Tree)
+          throw ConfigError("--tree-probe: scene " + cfg.scene->name + " has no Barnes-Hut tree (physics.gravity = " +
+                            cfg.params.physics.get(Slot::Gravity) + ")");
+        if (opt.tree_probe >= 0 && static_cast<std::size_t>(opt.tree_probe) >= snap.count)
+          throw ConfigError("--tree-probe " + std::to_string(opt.tree_probe) + ": scene " + cfg.scene->name + " has " +
+                            std::to_string(snap.count) + " particles");
         if (!snap.find(opt.color_by)) {
           std::string known;
           for (const auto& f : snap.fields) known += " " + f.name;
@@ -133,7 +139,15 @@ int run_command(const RunOptions& opt) {
 #ifdef SPH_HAVE_FRAMES
     int next_frame = 1;
     std::string err;
-    if (rec && !rec->write_frame(world.snapshot(), &err)) throw IoError(err);
+    auto frame = [&] {  // the snapshot, with the probed particle's tree walk when asked for
+      Snapshot snap = world.snapshot();
+      if (opt.tree_probe >= 0) {
+        snap.tree_cells = world.tree_cells(static_cast<std::size_t>(opt.tree_probe));
+        snap.tree_probe = opt.tree_probe;
+      }
+      return snap;
+    };
+    if (rec && !rec->write_frame(frame(), &err)) throw IoError(err);
     Progress progress(t_end);
 #endif
     auto reached = [&](double t) { return world.time() >= t * (1.0 - 1e-12); };
@@ -150,7 +164,7 @@ int run_command(const RunOptions& opt) {
       }
 #ifdef SPH_HAVE_FRAMES
       if (rec && reached(next_frame * opt.every)) {
-        if (!rec->write_frame(world.snapshot(), &err)) throw IoError(err);
+        if (!rec->write_frame(frame(), &err)) throw IoError(err);
         while (reached(next_frame * opt.every)) ++next_frame;
       }
       progress.update(world.time());

@@ -22,6 +22,7 @@ struct RunOptions {
   bool log_scale = false;
   std::string profile_axis = "off";  ///< 2D scenes: "x" or "y" plots the field against that coordinate
   std::string video;
+  long long tree_probe = -1;       ///< frames draw the Barnes-Hut walk of this particle (-1: none)
 };
 
 int run_command(const RunOptions& opt);

@@ -35,6 +35,9 @@ int main(int argc, char** argv) {
   run->add_option("--profile-axis", opt.profile_axis,
                   "2D scenes: plot the field against x or y (with its reference curve) instead of the plane; off");
   run->add_option("--video", opt.video, "also make this .mp4 with ffmpeg");
+  run->add_option("--tree-probe", opt.tree_probe,
+                  "scenes with physics.gravity = tree: draw the cells of this particle's tree walk in the frames")
+      ->check(CLI::NonNegativeNumber);
 #endif
   try {
     app.parse(argc, argv);

@@ -5,6 +5,7 @@
 
 #include "palette.h"
 #include "particle_instances.h"
+#include "tree_overlay.h"
 #include "sph/snapshot.h"
 
 namespace sph::render {
@@ -75,6 +76,7 @@ void compose_orbit(FrameBuild& f, const sph::Snapshot& snap, const ViewSettings&
   f.pixel_radius = from_h ? 0.f : view.point_px;
   f.min_radius = view.min_radius_px;
   f.shaded = true;
+  if (view.show_tree) add_tree_overlay(f, snap);
 }
 
 }  // namespace sph::render

@@ -2,6 +2,7 @@
 
 #include "axes.h"
 #include "outline_overlay.h"
+#include "tree_overlay.h"
 #include "palette.h"
 #include "particle_instances.h"
 #include "sph/snapshot.h"
@@ -39,6 +40,7 @@ void compose_plane(FrameBuild& f, const sph::Snapshot& snap, const ViewSettings&
   f.min_radius = view.min_radius_px;
 
   if (view.show_outlines) add_outlines(f, snap);  // over the particles, clipped to the plot
+  if (view.show_tree) add_tree_overlay(f, snap);
 }
 
 }  // namespace sph::render

@@ -46,6 +46,7 @@ struct ViewSettings {
 
   bool show_exact = true;      ///< profiles: draw the exact/reference curve when the snapshot has one
   bool show_walls = true;      ///< 2D/3D: draw wall particles (in palette::kWall); profiles never show them
+  bool show_tree = true;       ///< 2D/3D: draw the snapshot's Barnes-Hut cells (render::add_tree_overlay) when it has them
   bool show_outlines = true;   ///< 2D: draw the snapshot's reference outlines over the particles
   int profile_axis = -1;       ///< 2D: -1 = the plane view; 0 / 1 = profile of the field against x / y
   int text_scale = 0;          ///< integer pixel scale of the 13 px font; 0 = from the frame height

@@ -101,6 +101,7 @@ struct GravityParams {
   double G = 1.0;        ///< gravitational constant [length^3/(mass time^2)]; 4 pi^2 in AU, Msun, yr
   double eps = 0.0;      ///< Plummer softening length [length]
   double theta = 0.5;    ///< Barnes-Hut opening angle [dimensionless]: 0 opens every cell (exact)
+  double tol = 1e-3;     ///< the tree's relative guard [dimensionless]: a cell's dropped octupole <= tol |a_i|; 0 = off
   Softening softening = Softening::Plummer;
   bool operator==(const GravityParams&) const = default;
 };

@@ -34,6 +34,13 @@ struct Outline {
   std::vector<float> y;
 };
 
+/// A cell of the Barnes-Hut walk of one particle (the tree overlay): where it is and how it is used.
+struct TreeCell {
+  std::array<float, 3> center{};  ///< geometric centre [length]
+  float half = 0.f;               ///< half its side [length]
+  bool whole = false;             ///< used whole (multipole); false: a leaf summed particle by particle
+};
+
 struct Snapshot {
   std::string scene;           ///< scene name
   int dim = 2;                 ///< 1, 2 or 3
@@ -48,6 +55,10 @@ struct Snapshot {
   std::vector<ExactCurve> exact;      ///< reference curves (1D scenes with an exact solution)
   std::vector<Outline> outlines;      ///< reference shapes (2D scenes)
   std::array<float, 6> bounds{0, 1, 0, 1, 0, 1};  ///< domain box xmin,xmax,ymin,ymax,zmin,zmax
+  /// The tree's cells as the walk of particle tree_probe (an index into the arrays above) uses them at
+  /// the current theta; empty unless a viewer asked for them and the scene's gravity is the tree.
+  std::vector<TreeCell> tree_cells;
+  std::int64_t tree_probe = -1;
 
   /// The field with this name, or nullptr.
   const SnapshotField* find(std::string_view name) const {

@@ -99,6 +99,9 @@ class Stepper {
   void set_real_time_factor(double f);
   /// Pause when t reaches params.t_end (default on).
   void set_stop_at_end(bool on);
+  /// Frames carry the Barnes-Hut cells of particle k's walk (Snapshot::tree_cells) for the tree
+  /// overlay; k < 0 = none (the default).
+  void set_tree_probe(std::int64_t k);
   /// Records at fixed simulated-time intervals: from now on, steps land on t0 + k x every and each
   /// such frame is published with record_index = k and held until latest() has taken it. 0 = stop.
   void set_record_interval(double every);

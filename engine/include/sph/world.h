@@ -93,6 +93,9 @@ class World {
   double reference_value(const std::string& name) const;
   /// Copy of what a viewer needs (floats): positions, h, kinds, every display field, reference curves.
   Snapshot snapshot() const;
+  /// The Barnes-Hut cells the walk of particle k (a snapshot index) takes now, at the current theta and
+  /// guard (the tree overlay); empty when the scene's gravity is not the tree or k is out of range.
+  std::vector<TreeCell> tree_cells(std::size_t k) const;
 
   /// Evaluate the stages for the current state (done automatically by step()).
   void evaluate();

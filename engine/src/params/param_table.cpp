@@ -258,6 +258,11 @@ std::vector<ParamInfo> build() {
                     "Barnes-Hut opening angle: a cell is used whole when its size < theta x distance; 0 = exact",
                     "theta", kTree, true},
                    [](Params& p) -> double& { return p.gravity.theta; }, 0.0, 1.2));
+  t.push_back(real({"gravity.tol", "dimensionless",
+                    "Barnes-Hut relative guard: a cell is used whole only if its dropped octupole term M bmax^3/d^5 is "
+                    "below tol x |a| of the particle (so the error stays small where |a| is small); 0 = plain theta",
+                    "tol", kTree, true},
+                   [](Params& p) -> double& { return p.gravity.tol; }, 0.0, 0.1));
   t.push_back(real({"walls.D", "length^2/time^2", "Lennard-Jones strength (seed 001 eq. 60: D ~ 5 g H); 0 = the scene's",
                     "", kLJ, true},
                    [](Params& p) -> double& { return p.walls.D; }, 0.0, 1e12));

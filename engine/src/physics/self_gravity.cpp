@@ -91,7 +91,7 @@ class SelfGravity final : public Stage {
       gravity::direct_sum(s, law, g.G, out);
     } else {
       tree_.build(s);
-      tree_.evaluate(s, law, g.G, g.theta, out);
+      tree_.evaluate(s, law, g.G, g.theta, out, g.tol);
     }
   }
   bool evaluated_at(const Particles& p) const {

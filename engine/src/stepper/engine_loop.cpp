@@ -142,6 +142,9 @@ void EngineLoop::apply(const Command& c) {
     case K::SetRecordInterval:
       start_recording(c.value);
       break;
+    case K::SetTreeProbe:
+      tree_probe_ = std::isfinite(c.value) && c.value >= 0.0 ? static_cast<std::int64_t>(c.value) : -1;
+      break;
   }
 }
 
@@ -264,6 +267,10 @@ void EngineLoop::publish(int record_index) {
   f.world_serial = world_serial_;
   if (world_) {
     f.snapshot = world_->snapshot();
+    if (tree_probe_ >= 0) {
+      f.snapshot.tree_cells = world_->tree_cells(static_cast<std::size_t>(tree_probe_));
+      if (!f.snapshot.tree_cells.empty()) f.snapshot.tree_probe = tree_probe_;
+    }
     f.diagnostics = world_->diagnostics();
     f.has_reference = world_->has_reference();
     f.ref_columns = world_->reference_columns();

@@ -48,6 +48,7 @@ class EngineLoop {
   std::uint64_t world_serial_ = 0, serial_ = 0, adopted_ = 0;
   bool running_ = false, at_end_ = false, stop_at_end_ = true, diverged_ = false;
   int single_steps_ = 0;
+  std::int64_t tree_probe_ = -1;       // particle whose tree walk the frames carry (-1: none)
   std::int64_t diverged_particle_ = -1, diverged_step_ = -1;
   std::string error_;
   double rtf_ = 0.0;                   // real-time factor (0 = as fast as possible)

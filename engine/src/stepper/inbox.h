@@ -24,6 +24,7 @@ struct Command {
     SetRealTimeFactor, ///< `value` simulated seconds per wall second (0 = as fast as possible)
     SetStopAtEnd,      ///< `flag`
     SetRecordInterval, ///< `value` [time units], 0 = stop recording
+    SetTreeProbe,      ///< `value`: the particle (snapshot index) whose tree walk frames carry; < 0 = none
   };
   Kind kind = Kind::Pause;
   RunConfig config;                 ///< Reset (params only) and Load

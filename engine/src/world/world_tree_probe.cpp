@@ -1,0 +1,35 @@
+// The tree overlay: the cells of one particle's Barnes-Hut walk, as self-gravity's tree stage would take
+// them now (same build, opening angle, guard and softening), for a viewer to draw.
+#include <optional>
+
+#include "gravity/barnes_hut.h"
+#include "sph/world.h"
+
+namespace sph {
+
+std::vector<TreeCell> World::tree_cells(std::size_t k) const {
+  std::vector<TreeCell> cells;
+  const Params& prm = cfg_.params;
+  if (prm.physics.gravity != GravityType::Tree || k >= by_id_.size()) return cells;
+  const std::size_t i = by_id_[k];
+  const gravity::Sources s = gravity::Sources::of(p_);
+  if (i >= s.n) return cells;  // a wall particle: not in the tree
+  gravity::PairLaw law;
+  law.kind = prm.gravity.softening;
+  law.eps2 = prm.gravity.eps * prm.gravity.eps;
+  std::optional<gravity::KernelSoftening> kernel;
+  if (law.kind == Softening::Kernel) law.kernel = &kernel.emplace(prm.kernel.type);
+  gravity::BarnesHutTree tree;
+  tree.build(s);
+  for (const gravity::CellUse& u : tree.interactions(s, law, prm.gravity.theta, prm.gravity.tol, i)) {
+    const gravity::TreeNode& nd = tree.nodes()[u.node];
+    TreeCell c;
+    for (int a = 0; a < 3; ++a) c.center[a] = static_cast<float>(nd.center[a]);
+    c.half = static_cast<float>(nd.half);
+    c.whole = u.whole;
+    cells.push_back(c);
+  }
+  return cells;
+}
+
+}  // namespace sph
