@@ -21,5 +21,6 @@ SceneSpec dust_sphere_scene();
 SceneSpec dust_collision_scene();
 SceneSpec evrard_scene();
 SceneSpec polytrope_scene();
+SceneSpec colliding_polytropes_scene();
 
 }  // namespace sph::scenes

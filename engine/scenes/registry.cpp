@@ -10,7 +10,7 @@ const std::vector<SceneSpec>& scene_registry() {
       scenes::elliptical_drop_scene(), scenes::dam_break_scene(), scenes::dam_break_slope_scene(),
       scenes::hydrostatic_tank_scene(), scenes::two_body_fall_scene(), scenes::kepler_scene(),
       scenes::solar_system_scene(), scenes::dust_sphere_scene(), scenes::dust_collision_scene(),
-      scenes::evrard_scene(), scenes::polytrope_scene(),
+      scenes::evrard_scene(), scenes::polytrope_scene(), scenes::colliding_polytropes_scene(),
   };
   return table;
 }
