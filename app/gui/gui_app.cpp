@@ -110,6 +110,7 @@ int run_gui(const GuiOptions& o) {
   Recorder recorder;
   FrameStats stats(o.max_fps);
   EngineRate engine_rate;
+  if (o.tree_probe >= 0) state.set_tree_probe(o.tree_probe);
   if (!o.record.empty()) {  // the stepper already records; open the directory
     state.record_dir = o.record;
     state.record_every = o.record_every;

@@ -24,6 +24,7 @@ struct GuiOptions {
   /// Test hook: FRAME:KEYS taps every key of KEYS (letters, ' ' for Space) at displayed frame FRAME, all
   /// between the same two frames (the quick taps a key-state poll would lose).
   std::vector<std::string> tap_keys;
+  long long tree_probe = -1;         ///< start with the tree overlay of this particle (tree-gravity scenes)
 };
 
 /// Parses argv. Returns -1 to go on, or the exit code (0 after --help, 2 on a usage error).

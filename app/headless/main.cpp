@@ -1,8 +1,9 @@
-// sph: the headless program. `sph list`, `sph check SCENE`, `sph run SCENE [...]`.
+// sph: the headless program. `sph list`, `sph check SCENE`, `sph run SCENE [...]`, `sph converge SCENE [...]`.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
 
+#include "cli_converge.h"
 #include "cli_run.h"
 #include "exit_codes.h"
 
@@ -39,6 +40,19 @@ int main(int argc, char** argv) {
                   "scenes with physics.gravity = tree: draw the cells of this particle's tree walk in the frames")
       ->check(CLI::NonNegativeNumber);
 #endif
+  ConvergeOptions conv;
+  auto* converge = app.add_subcommand("converge", "convergence study: error against resolution, with observed orders");
+  converge->add_option("scene", conv.scene, "built-in scene name or JSON scene file (it must have a reference)")->required();
+  converge->add_option("--key", conv.key, "parameter varied (default: the scene's, e.g. scene.n)");
+  converge->add_option("--values", conv.values, "comma-separated values of the key (default: the scene's)");
+  converge->add_option("--until", conv.until, "time of the comparison (default: the scene's)")
+      ->check(CLI::PositiveNumber);
+  converge->add_option("--column", conv.column, "reference column compared (default: the primary error)");
+  converge->add_option("--set", conv.sets, "override a parameter of every run: key=value (repeatable)");
+  converge->add_option("--out", conv.out, "output directory (default converge_SCENE): converge.csv, .md, .png");
+  converge->add_option("--threads", conv.threads, "OpenMP threads")->check(CLI::Range(1, 1024));
+  converge->add_option("--size", conv.size, "plot size WIDTHxHEIGHT (even numbers)");
+  converge->add_flag("--quiet", conv.quiet, "no progress or table on the terminal");
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -50,6 +64,7 @@ int main(int argc, char** argv) {
   try {
     if (app.got_subcommand("list")) return list_command();
     if (app.got_subcommand("check")) return check_command(opt);
+    if (app.got_subcommand("converge")) return converge_command(conv);
     return run_command(opt);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "sph: internal error: %s\n", e.what());

@@ -59,6 +59,10 @@ void layout_chrome(FrameBuild& f, const ShownField& shown, int width, int height
 void add_title(FrameBuild& f, const sph::Snapshot& snap, const ShownField& shown) {
   const FrameLayout& L = f.layout;
   const int s = L.text_scale;
+  if (!snap.title.empty()) {
+    f.text.add(snap.title, L.title.x, L.title.y, s, palette::kText);
+    return;
+  }
   const std::string scene = snap.scene.empty() ? "sph" : snap.scene;
   const std::string title = scene + "  t = " + time_string(snap.t) + "  step " + std::to_string(snap.step);
   float x = L.title.x;

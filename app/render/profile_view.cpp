@@ -94,7 +94,7 @@ void compose_profile(FrameBuild& f, const sph::Snapshot& snap, const ViewSetting
               Vec3f{}};
   L.plot_to_clip = f.camera.proj;
 
-  add_axes(f, box, r, {std::string(profile_axis_name(axis)), shown.field ? shown.label : std::string("(no field)"), true});
+  add_axes(f, box, r, {snap.x_label.empty() ? std::string(profile_axis_name(axis)) : snap.x_label, shown.field ? shown.label : std::string("(no field)"), true});
   build_instances(snap, shown, {Placement::Profile, axis, 0.f, false}, &f.instances);
   f.pixel_radius = view.point_px * 0.5f * static_cast<float>(1 + s);  // grows with the text: 3 px -> 4.5 px at 720p
 
@@ -111,8 +111,10 @@ void compose_profile(FrameBuild& f, const sph::Snapshot& snap, const ViewSetting
     // Thinner than the dots, so that the particles stay visible on both sides of the curve.
     f.clipped.polyline(xy, 0.75f * s + 0.5f, {c.r, c.g, c.b, 1.f});
     const Rgb mid = colormap_rgb(shown.cmap, 0.5f);
-    const LegendEntry rows[2] = {{"exact", false, {c.r, c.g, c.b, 1.f}, 0.75f * s + 0.5f, {0, 0, 0, 0}},
-                                 {"SPH particles", true, {mid.r, mid.g, mid.b, 1.f}, f.pixel_radius, {0, 0, 0, 0}}};
+    const std::string curve = snap.curve_label.empty() ? "exact" : snap.curve_label;
+    const std::string points = snap.points_label.empty() ? "SPH particles" : snap.points_label;
+    const LegendEntry rows[2] = {{curve, false, {c.r, c.g, c.b, 1.f}, 0.75f * s + 0.5f, {0, 0, 0, 0}},
+                                 {points, true, {mid.r, mid.g, mid.b, 1.f}, f.pixel_radius, {0, 0, 0, 0}}};
     add_legend(f, box, rows);
   }
 }

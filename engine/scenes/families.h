@@ -22,5 +22,7 @@ SceneSpec dust_collision_scene();
 SceneSpec evrard_scene();
 SceneSpec polytrope_scene();
 SceneSpec colliding_polytropes_scene();
+SceneSpec burgers_viscous_scene();
+SceneSpec burgers_upwind_scene();
 
 }  // namespace sph::scenes

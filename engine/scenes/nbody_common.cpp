@@ -5,20 +5,10 @@
 namespace sph::scenes {
 
 void make_nbody(SceneSpec& s, GravityType type, double G) {
-  Physics& ph = s.defaults.physics;
-  ph.density = DensityMode::None;
-  ph.smoothing = HMode::Fixed;
-  ph.eos = EosType::None;
-  ph.force = ForceType::None;
-  ph.viscosity = ViscType::None;
-  ph.energy = Toggle::Off;
-  ph.gravity = type;
+  without_sph(s);
+  s.defaults.physics.gravity = type;
   s.defaults.gravity.G = G;
   s.defaults.time.integrator = IntegratorType::Leapfrog;
-  for (Slot slot : {Slot::Density, Slot::Eos, Slot::Force, Slot::Viscosity, Slot::Xsph, Slot::Conduction, Slot::Energy,
-                    Slot::BodyForce, Slot::Walls})
-    s.allow(slot, {"none"});
-  s.allow(Slot::Smoothing, {"fixed"});
   s.allow(Slot::Gravity, {"direct", "tree"});
 }
 

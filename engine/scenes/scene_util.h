@@ -30,6 +30,11 @@ Particles make_particles(const Params& prm, int dim, std::size_t n);
 /// Effective eta for a scene's params (kernel default if eta == 0).
 double effective_eta(const Params& prm, int dim);
 
+/// A scene that runs no SPH stage (N-body, the finite pointset method): density, EOS, forces,
+/// viscosity and energy set to none (and only none accepted, as for XSPH, conduction, body force and
+/// walls), h fixed.
+void without_sph(SceneSpec& s);
+
 /// Sets u from pressure for an ideal gas: u = P / ((gamma - 1) rho).
 inline double energy_from_pressure(double P, double rho, double gamma) { return P / ((gamma - 1.0) * rho); }
 

@@ -80,6 +80,7 @@ SceneSpec sod_scene() {
   s.allow(Slot::Eos, {"ideal_gas"});  // the Riemann reference is an ideal-gas solution
   s.allow(Slot::Walls, {"none"});
   s.params = tube_params(-0.5, 0.5, 1.0, 1.0, 0.125, 0.1, 400);
+  s.convergence = {"scene.n_left", {100, 200, 400, 800, 1600}, -1.0};  // as tests/bench/sod_bench
   s.build = [s](const Params& p, const SceneValues& v) { return build_tube(s, p, v); };
   s.initial_pressure = [](const Vec3& r, const SceneValues& v) { return r.x < v.at("x0") ? v.at("p_l") : v.at("p_r"); };
   // the middle of the left state: far from the diaphragm and (mirror) wall

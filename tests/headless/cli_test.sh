@@ -96,7 +96,28 @@ if "$sph" run --help | grep -q -- "--frames"; then
   bad odd_size 2 "size" run sod --frames "$work/odd" --size 641x480
   bad junk_size 2 "size" run sod --frames "$work/junk" --size 640x480junk
   bad unknown_field 2 "nope" run sod --frames "$work/nf" --color-by nope
+  bad tree_probe_without_tree 2 "tree-probe" run sod --frames "$work/tp" --tree-probe 3
+  bad tree_probe_out_of_range 2 "tree-probe" run dust_sphere --set scene.n=100 --frames "$work/tp" --color-by phi --tree-probe 100
+  env -u DISPLAY "$sph" run dust_sphere --set scene.n=300 --until 0.05 --frames "$work/tp" --every 0.05 --color-by phi \
+    --tree-probe 3 --size 640x480 > /dev/null
+  check "frames with the tree overlay" 0 $?
+  ok "tree overlay frame" test -s "$work/tp/frame_00001.png"
 fi
+
+# convergence studies: a table with observed orders; bad input is refused before anything runs
+"$sph" converge burgers_upwind --values 60,120,240 --out "$work/conv" --quiet
+check "converge" 0 $?
+ok "converge csv" test "$(grep -c '^[0-9]' "$work/conv/converge.csv")" = 3
+ok "converge md" grep -q "| 240 |" "$work/conv/converge.md"
+if "$sph" run --help | grep -q -- "--frames"; then
+  ok "converge plot" test "$(png_size "$work/conv/converge.png")" = "1280x720"
+fi
+bad converge_no_reference 3 "reference" converge box_lattice
+bad converge_unknown_column 3 "nope" converge burgers_upwind --column nope
+bad converge_one_value 3 "two values" converge burgers_upwind --values 60
+bad converge_junk_value 3 "abc" converge burgers_upwind --values 60,abc
+bad converge_bad_key 3 "scene.nope" converge burgers_upwind --key scene.nope --values 1,2
+
 
 echo "$passes passed, $fails failed"
 [ "$fails" -eq 0 ]

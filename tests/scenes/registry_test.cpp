@@ -28,6 +28,10 @@ TEST_P(EveryScene, StepsWithoutNaN) {
   const Particles& p = w.particles();
   for (std::size_t i = 0; i < p.size(); ++i) {
     for (int k = 0; k < p.dim(); ++k) ASSERT_TRUE(std::isfinite(p.x[k][i]) && std::isfinite(p.v[k][i]));
+    if (!p.has(Field::Density) && cfg.params.physics.fpm != FpmType::None) {  // FPM points: h is the MLS support
+      ASSERT_GT(p[Field::H][i], 0.0);
+      continue;
+    }
     if (!p.has(Field::Density)) {  // point masses (N-body): h = 0
       ASSERT_EQ(p[Field::H][i], 0.0);
       continue;

@@ -27,9 +27,10 @@ enum class Field : std::uint8_t {
   CorrCX, CorrCY, CorrCZ,  ///< c = L grad S / S^2: the corrected gradient is G = A grad W - W c (seed 001 eq. 36) [1/length]
   CorrXX, CorrXY, CorrXZ, CorrYX, CorrYY, CorrYZ, CorrZX, CorrZY, CorrZZ,  ///< A = L / S, L of seed 001 eq. 35
   CorrFallback,  ///< 1 where the gradient correction was ill-conditioned and fell back to L = I
-  XsphX, XsphY, XsphZ,  ///< XSPH velocity correction v* - v (seed 001 eq. 45) [length/time]
+  XsphX, XsphY, XsphZ,  ///< drift dx/dt - v: XSPH's v* - v (seed 001 eq. 45), FPM upwind's -u/2 [length/time]
   VelGradXX, VelGradXY, VelGradXZ, VelGradYX, VelGradYY, VelGradYZ, VelGradZX, VelGradZY, VelGradZZ,  ///< dv_k/dx_l (seed 001 eq. 52) [1/time]
   Potential,   ///< gravitational potential phi at the particle [length^2/time^2]
+  RestX,       ///< the FPM point's place in the initial set Gamma_0 (seed 002 Note 3.2) [length]
   Count
 };
 
@@ -123,6 +124,7 @@ constexpr std::array<FieldInfo, kFieldCount> kFieldInfo{{
     {"dvzdy", "dv_z/dy", field_detail::tx(2, 1), false, false},
     {"dvzdz", "dv_z/dz", field_detail::tx(2, 2), false, false},
     {"phi", "gravitational potential phi", 0, true, true},
+    {"x0", "initial point x0 (Gamma_0)", 0, false, false},
 }};
 
 inline const FieldInfo& info(Field f) { return kFieldInfo[index(f)]; }

@@ -96,6 +96,20 @@ struct BodyParams {
   bool operator==(const BodyParams&) const = default;
 };
 
+/// How the finite pointset method keeps its point set under control (seed 002 Note 3.2).
+enum class PointControl {
+  None,           ///< the points move with the flow (pure Lagrangian)
+  Reinterpolate,  ///< after every step, u is interpolated by MLS back onto the initial points Gamma_0
+};
+
+/// The finite pointset method (physics.fpm).
+struct FpmParams {
+  double alpha = 8.0;   ///< MLS weight exp(-alpha r^2 / h^2) (seed 002 eq. 9, Program 1) [dimensionless]
+  double eps = 0.005;   ///< Burgers viscosity epsilon (seed 002 eq. 6a) [length^2/time]
+  PointControl control = PointControl::Reinterpolate;
+  bool operator==(const FpmParams&) const = default;
+};
+
 /// Self-gravity (physics.gravity = direct or tree).
 struct GravityParams {
   double G = 1.0;        ///< gravitational constant [length^3/(mass time^2)]; 4 pi^2 in AU, Msun, yr
@@ -138,6 +152,7 @@ struct Params {
   GravityParams gravity;     ///< gravity.*
   WallParams walls;          ///< walls.*
   CorrectionParams correction;  ///< correction.*
+  FpmParams fpm;             ///< fpm.*
   bool operator==(const Params&) const = default;
 };
 
@@ -147,5 +162,7 @@ bool parse(const std::string& s, KernelType& out);
 bool parse(const std::string& s, IntegratorType& out);
 const char* to_string(Softening s);
 bool parse(const std::string& s, Softening& out);
+const char* to_string(PointControl c);
+bool parse(const std::string& s, PointControl& out);
 
 }  // namespace sph

@@ -54,6 +54,12 @@ enum class GravityType {
   Direct,  ///< O(N^2) direct summation, a gather over every other particle in storage order
   Tree,    ///< Barnes-Hut tree, monopole + quadrupole (seed 003 App. A): O(N log N)
 };
+/// The finite pointset method (seed 002): moving least squares on the particles instead of kernel sums.
+enum class FpmType {
+  None,
+  BurgersViscous,  ///< Du/Dt = eps u_xx, Dx/Dt = u (seed 002 eqs. 6a-6b, 16-17)
+  BurgersUpwind,   ///< Du/Dt = -u u_x / 2 by one-sided MLS, Dx/Dt = u / 2 (seed 002 eqs. 18-21)
+};
 /// Wall particles (kind Wall) built by the scene; periodic and mirror boundaries of the domain are ghosts.
 enum class WallType {
   None,
@@ -62,7 +68,7 @@ enum class WallType {
 };
 
 /// The slots, in pipeline order (the GUI lists them in this order).
-enum class Slot { Density, Smoothing, Eos, Force, Viscosity, Xsph, Conduction, Energy, BodyForce, Gravity, Walls, Count };
+enum class Slot { Density, Smoothing, Eos, Force, Viscosity, Xsph, Conduction, Energy, BodyForce, Gravity, Walls, Fpm, Count };
 inline constexpr std::size_t kSlotCount = static_cast<std::size_t>(Slot::Count);
 
 struct Physics {
@@ -77,6 +83,7 @@ struct Physics {
   BodyForce body_force = BodyForce::None;
   GravityType gravity = GravityType::None;
   WallType walls = WallType::None;
+  FpmType fpm = FpmType::None;
 
   bool corrected() const { return force == ForceType::Corrected || force == ForceType::StandardCorrected; }
   bool operator==(const Physics&) const = default;

@@ -38,6 +38,14 @@ struct SceneSetup {
   double wall_strength = 0.0;  ///< Lennard-Jones D [length^2/time^2] when walls.D = 0 (seed 001: ~5 g H)
 };
 
+/// The convergence study `sph converge SCENE` runs when not told otherwise: one key over a list of
+/// values, errors taken at time t (< 0: the scene's t_end).
+struct ConvergenceDefaults {
+  std::string key;
+  std::vector<double> values;
+  double t = -1.0;
+};
+
 struct SceneSpec {
   std::string name;
   std::string category;     ///< e.g. "gas dynamics / shock tubes"
@@ -58,6 +66,7 @@ struct SceneSpec {
   /// Optional initial pressure P(x): after the first density sum, u is set to P/((gamma-1) rho) so the
   /// initial pressure is exactly P even where summation smooths rho (no start-up pressure blip).
   std::function<double(const Vec3&, const SceneValues&)> initial_pressure;
+  ConvergenceDefaults convergence;  ///< empty key: scene.n over 60 ... 1920 if the scene has n
 
   SceneValues default_values() const;
   /// Restricts a slot to these options.

@@ -59,6 +59,10 @@ struct Snapshot {
   /// the current theta; empty unless a viewer asked for them and the scene's gravity is the tree.
   std::vector<TreeCell> tree_cells;
   std::int64_t tree_probe = -1;
+  /// A plot that is not a simulation state (a convergence study): its own title line instead of
+  /// "scene t = .. step ..", and the profile's x-axis label instead of the coordinate's name.
+  std::string title, x_label;
+  std::string points_label, curve_label;  ///< the 1D legend's rows (empty: "SPH particles", "exact")
 
   /// The field with this name, or nullptr.
   const SnapshotField* find(std::string_view name) const {

@@ -1,6 +1,6 @@
 // Pipeline order: density, smoothing length, EOS, wall pressure, corrections, velocity gradient, XSPH,
 // forces (with viscosity, conduction and the energy equation fused into their loop), continuity rate,
-// wall forces, body force, self-gravity. A slot set to "none" contributes no stage.
+// wall forces, body force, self-gravity; the finite pointset method runs alone. A slot set to "none" contributes no stage.
 #include "core/pipeline.h"
 
 #include "core/stages.h"
@@ -37,6 +37,7 @@ Pipeline::Pipeline(const Physics& ph, int dim) {
   if (ph.body_force == BodyForce::Uniform) add(make_body_force_uniform());
   if (ph.body_force == BodyForce::Damping) add(make_body_force_damping());
   if (ph.gravity != GravityType::None) add(make_self_gravity(ph.gravity));
+  if (ph.fpm != FpmType::None) add(make_fpm_burgers(ph.fpm, dim));
 
   fields_.add(Field::Mass).add(Field::H);
   for (const auto& s : stages_) {
@@ -48,7 +49,7 @@ Pipeline::Pipeline(const Physics& ph, int dim) {
     sets_a_ = sets_a_ || s->sets_acceleration();
     uses_neighbours_ = uses_neighbours_ || s->uses_neighbours();
   }
-  drifts_ = ph.xsph == Toggle::On;
+  drifts_ = ph.xsph == Toggle::On || ph.fpm == FpmType::BurgersUpwind;
 }
 
 }  // namespace sph

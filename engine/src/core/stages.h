@@ -34,5 +34,6 @@ std::unique_ptr<Stage> make_walls_lennard_jones();
 std::unique_ptr<Stage> make_body_force_uniform();
 std::unique_ptr<Stage> make_body_force_damping();
 std::unique_ptr<Stage> make_self_gravity(GravityType type);  // direct | tree
+std::unique_ptr<Stage> make_fpm_burgers(FpmType type, int dim);  // seed 002: viscous | upwind
 
 }  // namespace sph

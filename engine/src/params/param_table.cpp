@@ -1,6 +1,7 @@
 // The declaration of every run parameter (see sph/param_table.h).
 #include "sph/param_table.h"
 
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -151,6 +152,9 @@ const Owner kKernel{"the SPH kernel (SPH stages or kernel-softened gravity)", Sl
                       return ph.density != DensityMode::None || ph.force != ForceType::None || ph.xsph == Toggle::On ||
                              (ph.gravity != GravityType::None && p.gravity.softening == Softening::Kernel);
                     }};
+const Owner kFpm{"the finite pointset method", Slot::Fpm, [](const Params& p) { return p.physics.fpm != FpmType::None; }};
+const Owner kFpmViscous{"the viscous Burgers scheme", Slot::Fpm,
+                        [](const Params& p) { return p.physics.fpm == FpmType::BurgersViscous; }};
 const Owner kLJ{"the Lennard-Jones wall stage", Slot::Walls,
                 [](const Params& p) { return p.physics.walls == WallType::LennardJones; }};
 const Owner kCorrected{"the kernel corrections (corrected formulations, MLS density re-initialisation)", Slot::Force,
@@ -164,12 +168,12 @@ std::vector<ParamInfo> build() {
   using I = IntegratorType;
   std::vector<ParamInfo> t;
   // The slots first, in pipeline order; "h_mode" was the smoothing slot's flat key.
-  static const std::string slot_keys[kSlotCount] = {
-      "physics.density", "physics.smoothing", "physics.eos", "physics.force", "physics.viscosity",
-      "physics.xsph", "physics.conduction", "physics.energy", "physics.body_force", "physics.gravity",
-      "physics.walls"};
-  for (const SlotInfo& s : slot_table())
-    t.push_back(slot(s, slot_keys[static_cast<std::size_t>(s.slot)], s.slot == Slot::Smoothing ? "h_mode" : ""));
+  static std::array<std::string, kSlotCount> slot_keys;  // ParamInfo keeps views of them
+  for (const SlotInfo& s : slot_table()) {
+    std::string& key = slot_keys[static_cast<std::size_t>(s.slot)];
+    key = "physics." + std::string(s.key);
+    t.push_back(slot(s, key, s.slot == Slot::Smoothing ? "h_mode" : ""));
+  }
 
   t.push_back(choice<K>({"kernel.type", "choice", "smoothing kernel W (seed 000 eqs. 3.2.6-3.2.9)", "kernel", kKernel},
                         [](Params& p) -> K& { return p.kernel.type; },
@@ -263,6 +267,17 @@ std::vector<ParamInfo> build() {
                     "below tol x |a| of the particle (so the error stays small where |a| is small); 0 = plain theta",
                     "tol", kTree, true},
                    [](Params& p) -> double& { return p.gravity.tol; }, 0.0, 0.1));
+  t.push_back(real({"fpm.alpha", "dimensionless", "MLS weight exp(-alpha r^2/h^2) (seed 002 eq. 9; the seed uses 8)",
+                    "alpha", kFpm, true},
+                   [](Params& p) -> double& { return p.fpm.alpha; }, 0.0, 20.0));
+  t.push_back(real({"fpm.eps", "length^2/time", "Burgers viscosity epsilon (seed 002 eq. 6a)", "eps", kFpmViscous, true},
+                   [](Params& p) -> double& { return p.fpm.eps; }, 0.0, 10.0));
+  t.push_back(choice<PointControl>({"fpm.control", "choice",
+                                    "point control (seed 002 Note 3.2): reinterpolate u onto the initial points after "
+                                    "every step, or none (the points move with the flow)",
+                                    "", kFpm, true},
+                                   [](Params& p) -> PointControl& { return p.fpm.control; },
+                                   {PointControl::Reinterpolate, PointControl::None}));
   t.push_back(real({"walls.D", "length^2/time^2", "Lennard-Jones strength (seed 001 eq. 60: D ~ 5 g H); 0 = the scene's",
                     "", kLJ, true},
                    [](Params& p) -> double& { return p.walls.D; }, 0.0, 1e12));

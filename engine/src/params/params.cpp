@@ -20,6 +20,8 @@ constexpr std::pair<const char*, IntegratorType> kIntegrators[] = {
     {"leapfrog", IntegratorType::Leapfrog}, {"predictor_corrector", IntegratorType::PredictorCorrector}};
 
 constexpr std::pair<const char*, Softening> kSoftenings[] = {{"plummer", Softening::Plummer}, {"kernel", Softening::Kernel}};
+constexpr std::pair<const char*, PointControl> kControls[] = {{"none", PointControl::None},
+                                                             {"reinterpolate", PointControl::Reinterpolate}};
 
 template <class E, std::size_t N>
 const char* name_of(E e, const std::pair<const char*, E> (&table)[N]) {
@@ -36,5 +38,7 @@ bool parse(const std::string& s, KernelType& out) { return parse_enum(s, out, kK
 bool parse(const std::string& s, IntegratorType& out) { return parse_enum(s, out, kIntegrators); }
 const char* to_string(Softening s) { return name_of(s, kSoftenings); }
 bool parse(const std::string& s, Softening& out) { return parse_enum(s, out, kSoftenings); }
+const char* to_string(PointControl c) { return name_of(c, kControls); }
+bool parse(const std::string& s, PointControl& out) { return parse_enum(s, out, kControls); }
 
 }  // namespace sph

@@ -39,6 +39,9 @@ const Names<BodyForce> kBody{{{"none", BodyForce::None}, {"uniform", BodyForce::
 const Names<GravityType> kGravity{{{"none", GravityType::None}, {"direct", GravityType::Direct}, {"tree", GravityType::Tree}}};
 const Names<WallType> kWalls{{{"none", WallType::None}, {"lennard_jones", WallType::LennardJones}, {"dummy", WallType::Dummy}}};
 
+const Names<FpmType> kFpm{{{"none", FpmType::None}, {"burgers_viscous", FpmType::BurgersViscous},
+                           {"burgers_upwind", FpmType::BurgersUpwind}}};
+
 bool parse_toggle(std::string_view s, Toggle& t) {
   if (s == "off") { t = Toggle::Off; return true; }  // accepted as a synonym of none
   return kToggle.parse(s, t);
@@ -79,6 +82,10 @@ const std::array<SlotInfo, kSlotCount>& slot_table() {
        "wall particles: Lennard-Jones repulsion (seed 001 eq. 60) or dummy particles with extrapolated pressure "
        "(Adami et al. 2012)",
        kWalls.options(), false},
+      {Slot::Fpm, "fpm",
+       "finite pointset method (seed 002): Burgers' equation by moving least squares, viscous (eqs. 16-17) or upwind "
+       "(eqs. 18-21)",
+       kFpm.options(), false},
   }};
   return table;
 }
@@ -98,6 +105,7 @@ std::string Physics::get(Slot s) const {
     case Slot::BodyForce: return kBody.name(body_force);
     case Slot::Gravity: return kGravity.name(gravity);
     case Slot::Walls: return kWalls.name(walls);
+    case Slot::Fpm: return kFpm.name(fpm);
     case Slot::Count: break;
   }
   throw std::logic_error("Physics::get: no such slot");
@@ -116,6 +124,7 @@ bool Physics::set(Slot s, std::string_view o) {
     case Slot::BodyForce: return kBody.parse(o, body_force);
     case Slot::Gravity: return kGravity.parse(o, gravity);
     case Slot::Walls: return kWalls.parse(o, walls);
+    case Slot::Fpm: return kFpm.parse(o, fpm);
     case Slot::Count: break;
   }
   return false;
@@ -123,6 +132,10 @@ bool Physics::set(Slot s, std::string_view o) {
 
 std::string Physics::validate() const {
   auto is = [&](Slot s) { return "physics." + std::string(slot_info(s).key) + " = " + get(s); };
+  if (fpm != FpmType::None)  // a method of its own: no kernel sums, no EOS, no other forces
+    for (Slot s : {Slot::Density, Slot::Eos, Slot::Force, Slot::Viscosity, Slot::Xsph, Slot::Energy, Slot::BodyForce,
+                   Slot::Gravity, Slot::Walls})
+      if (get(s) != "none") return is(Slot::Fpm) + " is a method of its own, but " + is(s) + " (set it to none)";
   if (force != ForceType::None && density == DensityMode::None)
     return is(Slot::Force) + " needs densities, but " + is(Slot::Density);
   if (force != ForceType::None && eos == EosType::None)

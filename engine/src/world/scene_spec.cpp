@@ -16,6 +16,8 @@ bool SceneSpec::allows(Slot s, const std::string& option) const {
   // self-gravity needs an open domain (no periodic images: that would need Ewald sums): a scene offers
   // it only by listing its options
   if (s == Slot::Gravity && list.empty()) return option == "none";
+  // the finite pointset method has scenes of its own (seed 002): likewise offered only by listing it
+  if (s == Slot::Fpm && list.empty()) return option == "none";
   return list.empty() || std::find(list.begin(), list.end(), option) != list.end();
 }
 

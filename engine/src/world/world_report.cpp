@@ -93,6 +93,7 @@ Snapshot World::snapshot() const {
   s.t = t_;
   s.dt = dt_last_;
   s.count = n;
+  if (cfg_.params.physics.fpm != FpmType::None) s.points_label = "FPM points";
   // entries in id order (by_id_): a particle keeps its place in every snapshot whatever the storage order
   s.x.resize(n); s.y.resize(n); s.z.resize(n); s.h.resize(n);
   for (std::size_t k = 0; k < n; ++k) {
