@@ -3,6 +3,7 @@
 // Panels read and edit this; they reach the engine only through the methods below.
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,16 @@ struct Requests {
   bool screenshot = false;    ///< write the whole window to a PNG
   bool start_recording = false;
   bool stop_recording = false;
+};
+
+class ConvergeJob;
+
+/// The convergence panel's fields and its running or finished study.
+struct ConvergeUi {
+  std::string scene;  ///< the scene the fields were filled for
+  std::string key, values, column, message;
+  double t = 0.0;
+  std::shared_ptr<ConvergeJob> job;
 };
 
 class GuiState {
@@ -59,6 +70,7 @@ class GuiState {
   double real_time_factor = 0.0;   ///< as last sent (0 = as fast as possible)
   bool stop_at_end = true;         ///< as last sent
   std::int64_t tree_probe = -1;    ///< as last sent (-1: no tree overlay)
+  ConvergeUi converge;             ///< the convergence study panel
   int tree_probe_pick = 0;         ///< the particle the overlay shows when switched on
 
   // --- view and user requests --------------------------------------------------------------------------

@@ -26,6 +26,7 @@ void draw_panels(GuiState& s, const Layout& L, const FrameStats& stats) {
     if (ImGui::CollapsingHeader("Run", ImGuiTreeNodeFlags_DefaultOpen)) panel_run(s);
     if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) panel_params(s);
     if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) panel_display(s);
+    if (ImGui::CollapsingHeader("Convergence study")) panel_converge(s);
     ImGui::PopItemWidth();
   }
   ImGui::End();

@@ -16,6 +16,7 @@ void panel_run(GuiState& s);          ///< play/pause/step/reset, pacing, screen
 void panel_params(GuiState& s);       ///< live run parameters from sph::param_table()
 void panel_display(GuiState& s);      ///< colour by, colour map, range, particle size, camera
 void panel_diagnostics(GuiState& s);  ///< energies, momentum, L1 error against time
+void panel_converge(GuiState& s);     ///< convergence study of the current scene (sph converge)
 void panel_kernel(GuiState& s);       ///< kernel explorer: W(q), dW/dq against the Gaussian
 void status_line(GuiState& s, const FrameStats& stats);  ///< t, dt, steps/s, neighbours, h-iterations
 void divergence_modal(GuiState& s);   ///< after a NaN/inf: which particle and step, and a reset button

@@ -101,23 +101,26 @@ int run_command(const RunOptions& opt) {
     World world(cfg);
 #ifdef SPH_HAVE_FRAMES
     std::unique_ptr<FrameRecorder> rec;
+    RunOptions fopt = opt;  // with the colour-by field resolved
     try {
       if (!opt.frames.empty()) {  // refuse an unknown field before anything is written
         const Snapshot snap = world.snapshot();
+        if (fopt.color_by.empty())  // the default: rho where the scene has it, else its first field
+          fopt.color_by = snap.find("rho") || snap.fields.empty() ? "rho" : snap.fields.front().name;
         if (opt.tree_probe >= 0 && cfg.params.physics.gravity != GravityType::Tree)
           throw ConfigError("--tree-probe: scene " + cfg.scene->name + " has no Barnes-Hut tree (physics.gravity = " +
                             cfg.params.physics.get(Slot::Gravity) + ")");
         if (opt.tree_probe >= 0 && static_cast<std::size_t>(opt.tree_probe) >= snap.count)
           throw ConfigError("--tree-probe " + std::to_string(opt.tree_probe) + ": scene " + cfg.scene->name + " has " +
                             std::to_string(snap.count) + " particles");
-        if (!snap.find(opt.color_by)) {
+        if (!snap.find(fopt.color_by)) {
           std::string known;
           for (const auto& f : snap.fields) known += " " + f.name;
-          throw ConfigError("--color-by " + opt.color_by + ": no such field in scene " + cfg.scene->name +
+          throw ConfigError("--color-by " + fopt.color_by + ": no such field in scene " + cfg.scene->name +
                             " (fields:" + known + ")");
         }
       }
-      rec = make_recorder(opt);  // validates the frame flags before anything is written
+      rec = make_recorder(fopt);  // validates the frame flags before anything is written
       if (rec && rec->view().profile_axis >= 0 && !render::draws_profile(cfg.scene->dim, rec->view().profile_axis))
         std::fprintf(stderr, "sph: note: %s applies to 2D scenes; %s is %dD, so it is ignored\n",
                      flag::kProfileAxis, cfg.scene->name.c_str(), cfg.scene->dim);

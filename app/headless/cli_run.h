@@ -16,7 +16,7 @@ struct RunOptions {
   std::string frames;              ///< frame directory ("" = no frames)
   double every = 0.1;              ///< simulated time between frames
   std::string size = "1280x720";
-  std::string color_by = "rho";
+  std::string color_by;             ///< empty: rho where the scene has it, else its first field
   std::string cmap = "viridis";
   std::string range = "auto";
   bool log_scale = false;

@@ -6,8 +6,10 @@
 // control keeps the points on Gamma_0 and "none" lets them move with the flow.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include "reference/burgers_exact.h"
 #include "sph/convergence.h"
@@ -92,6 +94,29 @@ TEST(BurgersPointControl, ReinterpolationKeepsGammaZeroAndNoneLetsThePointsMove)
       EXPECT_NEAR(moved, 0.5, 0.02);  // the points at u = 1 travelled u t
     }
   }
+}
+
+TEST(BurgersPointControl, MergeSplitKeepsTheGapsBetweenHalfAndThreeHalvesDxAndConverges) {
+  RunConfig cfg = RunConfig::from_scene("burgers_viscous");
+  cfg.set("fpm.control", "merge_split", "test");
+  cfg.set("scene.n", "480", "test");
+  World w(cfg);
+  while (w.time() < 0.8) w.step(0.8 - w.time());
+  const Particles& p = w.particles();
+  std::vector<double> x(p.x[0].begin(), p.x[0].begin() + static_cast<std::ptrdiff_t>(p.fluid()));
+  std::sort(x.begin(), x.end());
+  double lo = 1e9, hi = 0.0;
+  for (std::size_t i = 1; i < x.size(); ++i) {
+    lo = std::min(lo, x[i] - x[i - 1]);
+    hi = std::max(hi, x[i] - x[i - 1]);
+  }
+  const double dx = w.spacing();
+  std::printf("merge_split, N0 = 480: %zu points at t = 0.8, gaps %.3f ... %.3f dx, e_viscous %.3g\n", p.fluid(),
+              lo / dx, hi / dx, w.reference_value("e_viscous"));
+  EXPECT_NE(p.fluid(), 480u);  // points entered at the inflow end and merged in the compressed ramp
+  EXPECT_GE(lo, 0.5 * dx * (1 - 1e-9));
+  EXPECT_LE(hi, 1.5 * dx * (1 + 1e-9));
+  EXPECT_LT(w.reference_value("e_viscous"), 1e-4);  // as close to the viscous solution as re-interpolation
 }
 
 }  // namespace

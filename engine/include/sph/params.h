@@ -100,6 +100,7 @@ struct BodyParams {
 enum class PointControl {
   None,           ///< the points move with the flow (pure Lagrangian)
   Reinterpolate,  ///< after every step, u is interpolated by MLS back onto the initial points Gamma_0
+  MergeSplit,     ///< points move with the flow; two closer than dx0/2 merge, a gap wider than 3 dx0/2 gets a midpoint
 };
 
 /// The finite pointset method (physics.fpm).

@@ -107,6 +107,8 @@ class World {
   /// Stage actions due after a completed step (e.g. density re-initialisation).
   void after_step();
   void reset_timings();
+  /// Replaces the real particles by a stage's new set of another size (see Stage::take_resampled).
+  void adopt(Particles&& fresh);
   /// Permutes the particle arrays into Morton order (the fluid; walls once) and updates by_id().
   void reorder();
   void check_finite() const;

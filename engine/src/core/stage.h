@@ -72,6 +72,9 @@ class Stage {
   /// That action (e.g. re-initialising rho), with fresh ghosts and neighbour lists; the rates of the
   /// last evaluation are then stale and the next step evaluates first.
   virtual void after_step(StageContext&) {}
+  /// After after_step(): a new set of real particles when the stage changed their number (the finite
+  /// pointset method's merge/split point control); the world adopts it whole (fields, ids, kinds).
+  virtual bool take_resampled(Particles&) { return false; }
   /// Largest stable dt from this stage, before the Courant factor [time].
   virtual double dt_limit(const StageContext&) const { return kNoLimit; }
   /// Potential energy of a conservative force [energy].

@@ -274,10 +274,11 @@ std::vector<ParamInfo> build() {
                    [](Params& p) -> double& { return p.fpm.eps; }, 0.0, 10.0));
   t.push_back(choice<PointControl>({"fpm.control", "choice",
                                     "point control (seed 002 Note 3.2): reinterpolate u onto the initial points after "
-                                    "every step, or none (the points move with the flow)",
+                                    "every step; merge_split (points closer than dx/2 merge, gaps wider than 3 dx/2 "
+                                    "get a midpoint, values linearly interpolated); or none (the points move freely)",
                                     "", kFpm, true},
                                    [](Params& p) -> PointControl& { return p.fpm.control; },
-                                   {PointControl::Reinterpolate, PointControl::None}));
+                                   {PointControl::Reinterpolate, PointControl::MergeSplit, PointControl::None}));
   t.push_back(real({"walls.D", "length^2/time^2", "Lennard-Jones strength (seed 001 eq. 60: D ~ 5 g H); 0 = the scene's",
                     "", kLJ, true},
                    [](Params& p) -> double& { return p.walls.D; }, 0.0, 1e12));

@@ -21,7 +21,8 @@ constexpr std::pair<const char*, IntegratorType> kIntegrators[] = {
 
 constexpr std::pair<const char*, Softening> kSoftenings[] = {{"plummer", Softening::Plummer}, {"kernel", Softening::Kernel}};
 constexpr std::pair<const char*, PointControl> kControls[] = {{"none", PointControl::None},
-                                                             {"reinterpolate", PointControl::Reinterpolate}};
+                                                             {"reinterpolate", PointControl::Reinterpolate},
+                                                             {"merge_split", PointControl::MergeSplit}};
 
 template <class E, std::size_t N>
 const char* name_of(E e, const std::pair<const char*, E> (&table)[N]) {

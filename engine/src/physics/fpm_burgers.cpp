@@ -8,12 +8,18 @@
 //    printed sign gives Du/Dt = +u u_x / 2). The seed's runs have u >= 0, where both agree.
 // Point control (Note 3.2), fpm.control = reinterpolate: after every step u is interpolated by MLS
 // from the moved points back onto their initial places Gamma_0 (field x0), and the points return there.
+// merge_split (the Note's alternative): the points move with the flow; two points closer than dx0/2
+// are replaced by their midpoint, a gap wider than 3 dx0/2 gets a midpoint, u linearly interpolated
+// (the seed gives no thresholds: these are ours). Not in the seed either, and needed for a closed
+// point set: a point enters at the inflow end when the first one has moved dx0 away from it (u of its
+// neighbour), and points beyond the outflow end leave.
 // Timestep (before the Courant factor): the seed's CFL condition dt <= dx / (2 max|u|) (§4) and, for the
 // viscous scheme, the explicit diffusion limit dt <= dx^2 / (2 eps), which the seed does not state but
 // which binds from about 400 points at eps = 0.005 (forward Euler on u_xx is unstable beyond it).
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "core/parallel.h"
@@ -71,11 +77,13 @@ class FpmBurgers final : public Stage {
     return true;
   }
 
-  bool acts_after(const Params& prm, std::int64_t) const override {
-    return prm.fpm.control == PointControl::Reinterpolate;
-  }
+  bool acts_after(const Params& prm, std::int64_t) const override { return prm.fpm.control != PointControl::None; }
   /// Note 3.2: u at the initial points Gamma_0 by MLS from the moved points; the points go back there.
   void after_step(StageContext& c) override {
+    if (c.prm.fpm.control == PointControl::MergeSplit) {
+      merge_split(c);
+      return;
+    }
     Particles& p = c.p;
     const std::size_t n = p.fluid();
     const auto& h = p[Field::H];
@@ -101,13 +109,87 @@ class FpmBurgers final : public Stage {
     const Particles& p = c.p;
     double umax = 0.0;
     for (std::size_t i = 0; i < p.fluid(); ++i) umax = std::max(umax, std::abs(p.v[0][i]));
-    double dt = umax > 0.0 ? 0.5 * c.spacing / umax : kNoLimit;  // seed 002 §4
-    if (type_ == FpmType::BurgersViscous && c.prm.fpm.eps > 0.0)
-      dt = std::min(dt, c.spacing * c.spacing / (2.0 * c.prm.fpm.eps));
+    // points that move (merge_split, none) are closer than dx0 in places: the limits use the
+    // smallest distance between neighbours then
+    double dx = c.spacing;
+    if (c.prm.fpm.control != PointControl::Reinterpolate)
+      for (std::size_t i = 0; i < p.fluid(); ++i)
+        for (std::uint32_t j : c.nl.of(i))
+          if (j != i) dx = std::min(dx, std::abs(p.x[0][i] - p.x[0][j]));
+    double dt = umax > 0.0 ? 0.5 * dx / umax : kNoLimit;  // seed 002 §4
+    if (type_ == FpmType::BurgersViscous && c.prm.fpm.eps > 0.0) dt = std::min(dt, dx * dx / (2.0 * c.prm.fpm.eps));
     return dt;
   }
 
+ bool take_resampled(Particles& out) override {
+    if (!resampled_) return false;
+    out = std::move(*resampled_);
+    resampled_.reset();
+    return true;
+  }
+
  private:
+  struct Point {
+    double x, u;
+    std::size_t src;  ///< the particle whose other fields it takes
+    std::int64_t id;  ///< -1: a new point
+  };
+  /// Note 3.2's alternative; builds resampled_ when the point set changed.
+  void merge_split(const StageContext& c) {
+    const Particles& p = c.p;
+    const std::size_t n = p.fluid();
+    if (n == 0) return;
+    if (next_id_ < 0)
+      for (std::size_t i = 0; i < p.size(); ++i) next_id_ = std::max(next_id_, p.id[i] + 1);
+    std::vector<std::size_t> order(n);
+    for (std::size_t i = 0; i < n; ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return p.x[0][a] < p.x[0][b] || (p.x[0][a] == p.x[0][b] && p.id[a] < p.id[b]);
+    });
+    const double dx = c.spacing, lo = c.domain.lo[0], hi = c.domain.hi[0];
+    std::vector<Point> out;
+    out.reserve(n + 8);
+    bool changed = false;
+    const std::size_t first = order.front();
+    for (double x = p.x[0][first] - dx; x >= lo - 1e-12 * dx; x -= dx) {  // inflow: refill from the left end
+      out.insert(out.begin(), Point{x, p.v[0][first], first, -1});
+      changed = true;
+    }
+    for (std::size_t i : order) {
+      const Point q{p.x[0][i], p.v[0][i], i, p.id[i]};
+      if (q.x > hi) { changed = true; continue; }  // outflow
+      if (!out.empty()) {
+        Point& last = out.back();
+        const double gap = q.x - last.x;
+        if (gap < 0.5 * dx) {  // merge into the midpoint
+          last = Point{0.5 * (last.x + q.x), 0.5 * (last.u + q.u), last.src, last.id};
+          changed = true;
+          continue;
+        }
+        if (gap > 1.5 * dx) {  // split the gap
+          out.push_back(Point{0.5 * (last.x + q.x), 0.5 * (last.u + q.u), last.src, -1});
+          changed = true;
+        }
+      }
+      out.push_back(q);
+    }
+    if (!changed) {
+      resampled_.reset();
+      return;
+    }
+    Particles fresh(1, out.size(), p.fields());
+    const FieldSet fields = p.fields();
+    for (std::size_t k = 0; k < out.size(); ++k) {
+      const Point& q = out[k];
+      fields.for_each([&](Field f) { fresh[f][k] = p[f][q.src]; });
+      fresh.x[0][k] = q.x;
+      fresh.v[0][k] = q.u;
+      fresh[Field::RestX][k] = q.x;
+      fresh.id[k] = q.id >= 0 ? q.id : next_id_++;
+    }
+    resampled_ = std::move(fresh);
+  }
+
   /// Positions and u of particle i's neighbours (itself included), in the list's fixed order.
   static void gather(const StageContext& c, std::size_t i, std::vector<double>& xs, std::vector<double>& us) {
     const auto nb = c.nl.of(i);
@@ -121,6 +203,8 @@ class FpmBurgers final : public Stage {
 
   FpmType type_;
   std::vector<double> fresh_;
+  std::optional<Particles> resampled_;
+  std::int64_t next_id_ = -1;
 };
 
 }  // namespace

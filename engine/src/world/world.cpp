@@ -105,6 +105,19 @@ std::vector<std::string> World::stage_names() const {
 
 std::size_t World::neighbour_pairs() const { return nl_.pairs(); }
 
+void World::adopt(Particles&& fresh) {
+  p_ = std::move(fresh);
+  p_.add_fields(pipeline_->fields());
+  apply_boundaries(domain_, p_);
+  integrator_->reset();  // its history was per particle
+  nl_ = NeighbourList{};
+  h_limit_.clear();
+  lists_valid_ = false;
+  rates_known_ = false;
+  by_id_.clear();
+  reorder();
+}
+
 void World::reorder() {
   // Morton order over cells of the kernel's support at the largest h: a cell's neighbours are mostly
   // in the cells next to it on the curve. Walls never move: sorted once, then the order is kept.
@@ -342,6 +355,8 @@ void World::after_step() {
     if (s->acts_after(cfg_.params, step_)) {
       s->after_step(ctx);
       copy_ghost_fields(p_, s->shares());
+      Particles fresh;
+      if (s->take_resampled(fresh)) adopt(std::move(fresh));
     }
   current_ = false;  // the state changed: the next step evaluates first
 }

@@ -93,7 +93,7 @@ Snapshot World::snapshot() const {
   s.t = t_;
   s.dt = dt_last_;
   s.count = n;
-  if (cfg_.params.physics.fpm != FpmType::None) s.points_label = "FPM points";
+  if (cfg_.params.physics.fpm != FpmType::None) s.points_label = "FPM points (u = v_x)";
   // entries in id order (by_id_): a particle keeps its place in every snapshot whatever the storage order
   s.x.resize(n); s.y.resize(n); s.z.resize(n); s.h.resize(n);
   for (std::size_t k = 0; k < n; ++k) {
@@ -148,6 +148,8 @@ Snapshot World::snapshot() const {
   }
   add("speed", "speed |v|", [&](std::size_t i) { return p_.vel(i).norm(); });
   if (s.dim == 1) add("vx", "velocity v_x", [&](std::size_t i) { return p_.v[0][i]; });
+  if (cfg_.params.physics.fpm != FpmType::None)  // Burgers' u first: what a viewer shows by default
+    std::stable_partition(s.fields.begin(), s.fields.end(), [](const SnapshotField& f) { return f.name == "vx"; });
   if (s.dim == 2 && p_.has(Field::Density)) {
     const std::vector<double> w = vorticity(p_, kernel_, nl_);
     add("vorticity", "vorticity dv_y/dx - dv_x/dy", [&](std::size_t i) { return w[i]; });
