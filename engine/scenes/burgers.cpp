@@ -6,6 +6,9 @@
 //  - burgers_viscous: eps = 0.005 (eqs. 16-17); the seed shows t = 0.25, 0.75, 1.0 (Fig. 3);
 //  - burgers_upwind: eps = 0, one-sided MLS (eqs. 18-21; Fig. 5).
 // Points are kept on Gamma_0 by re-interpolation after every step (Note 3.2, fpm.control).
+// Seed misprints: Table 1's h at N = 120 reads 0.0220 where its other rows give 2.5/(N - 1) = 0.0210 (the
+// printed orders follow from 0.0210); Fig. 3's caption says "no viscosa" for the viscous run (eps = 0.005);
+// §3.2 prints the cell index as (x - xmin)/m, Program 3 uses ceil((x - xmin)/dx).
 #include <algorithm>
 #include <cmath>
 
