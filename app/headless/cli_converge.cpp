@@ -128,6 +128,7 @@ int converge_command(const ConvergeOptions& opt) {
 #endif
   const std::filesystem::path dir = opt.out.empty() ? "converge_" + base.scene->name : opt.out;
   std::error_code ec;
+  const bool existed = std::filesystem::exists(dir, ec);
   std::filesystem::create_directories(dir, ec);
   if (ec || !std::filesystem::is_directory(dir)) {
     std::fprintf(stderr, "sph: --out %s: cannot create the directory\n", dir.string().c_str());
@@ -143,9 +144,11 @@ int converge_command(const ConvergeOptions& opt) {
     });
   } catch (const ConfigError& e) {
     std::fprintf(stderr, "sph: converge: %s\n", e.what());
+    if (!existed) std::filesystem::remove(dir, ec);  // nothing was written into it
     return kInvalidScene;
   } catch (const DivergedError& e) {
     std::fprintf(stderr, "sph: converge: a run diverged: %s (nothing written)\n", e.what());
+    if (!existed) std::filesystem::remove(dir, ec);
     return kDiverged;
   }
   const std::string md = convergence_markdown(r);

@@ -117,6 +117,7 @@ bad converge_unknown_column 3 "nope" converge burgers_upwind --column nope
 bad converge_one_value 3 "two values" converge burgers_upwind --values 60
 bad converge_junk_value 3 "abc" converge burgers_upwind --values 60,abc
 bad converge_bad_key 3 "scene.nope" converge burgers_upwind --key scene.nope --values 1,2
+bad converge_diverged 5 "diverged" converge sod --set time.integrator=euler --set time.dt=0.05 --values 40,80
 
 
 echo "$passes passed, $fails failed"
