@@ -1,16 +1,13 @@
 // Text rows of diagnostics.csv and errors.csv (full double precision).
 #include <cstdio>
 
+#include "core/number_text.h"
 #include "sph/diagnostics.h"
 
 namespace sph {
 namespace {
 
-std::string fmt(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.12g", v);
-  return buf;
-}
+std::string fmt(double v) { return short_text(v); }
 
 /// Appends ",value" (written out to avoid a GCC 12 -Wrestrict false positive on "," + string).
 void field(std::string& s, const std::string& v) {

@@ -1,5 +1,6 @@
 // The declaration of every run parameter (see sph/param_table.h).
 #include "sph/param_table.h"
+#include "core/number_text.h"
 
 #include <array>
 #include <cmath>
@@ -9,12 +10,7 @@
 namespace sph {
 namespace {
 
-std::string format(double v) {
-  std::ostringstream os;
-  os.precision(17);
-  os << v;
-  return os.str();
-}
+std::string format(double v) { return exact_text(v); }
 
 using Active = std::function<bool(const Params&)>;
 

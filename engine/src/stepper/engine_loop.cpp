@@ -1,4 +1,5 @@
 #include "engine_loop.h"
+#include "core/number_text.h"
 
 #include <omp.h>
 
@@ -23,12 +24,7 @@ constexpr double kMaxLag = 0.25;      ///< real-time pacing forgets a backlog lo
 /// t has reached target (up to rounding of a sum of steps).
 bool reached(double t, double target) { return t >= target - 1e-12 * std::max(1.0, std::abs(target)); }
 
-std::string format(double v) {
-  std::ostringstream os;
-  os.precision(17);
-  os << v;
-  return os.str();
-}
+std::string format(double v) { return exact_text(v); }
 
 /// Lower this thread's priority (Linux threads have their own nice value; the OpenMP team the thread
 /// creates later inherits it). Failure is harmless: the engine just competes equally with the display.

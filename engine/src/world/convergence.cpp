@@ -5,16 +5,14 @@
 #include <cstdio>
 #include <limits>
 
+#include "core/number_text.h"
 #include "sph/world.h"
 
 namespace sph {
 namespace {
 
-std::string format(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.12g", v);
-  return buf;
-}
+std::string format(double v) { return exact_text(v); }  // for RunConfig::set
+std::string text(double v) { return short_text(v); }     // for the CSV
 
 }  // namespace
 
@@ -96,13 +94,13 @@ ConvergenceResult run_convergence(const RunConfig& base, const ConvergenceStudy&
 }
 
 std::string convergence_csv(const ConvergenceResult& r) {
-  std::string s = "# " + r.scene + ": " + r.column + " (" + r.column_description + ") at t = " + format(r.t) +
+  std::string s = "# " + r.scene + ": " + r.column + " (" + r.column_description + ") at t = " + text(r.t) +
                   " against " + r.key + "; h = initial spacing, order = log(e1/e2)/log(h1/h2); fitted slope " +
-                  format(r.slope) + "\n";
+                  text(r.slope) + "\n";
   s += "value,h,error,order,wall_s,steps\n";
   for (const ConvergenceRun& run : r.runs)
-    s += format(run.value) + "," + format(run.h) + "," + format(run.error) + "," +
-         (std::isnan(run.order) ? std::string() : format(run.order)) + "," + format(run.wall_s) + "," +
+    s += text(run.value) + "," + text(run.h) + "," + text(run.error) + "," +
+         (std::isnan(run.order) ? std::string() : text(run.order)) + "," + text(run.wall_s) + "," +
          std::to_string(run.steps) + "\n";
   return s;
 }
