@@ -1,11 +1,14 @@
 // Scene families of the built-in table (one function per scene).
 #pragma once
+#include <vector>
+
 #include "sph/scene.h"
 
 namespace sph::scenes {
 
 SceneSpec sod_scene();
 SceneSpec castellanos_scene();
+std::vector<SceneSpec> riemann_variant_scenes();  ///< lax, toro1 ... toro5
 SceneSpec box_lattice_scene();
 SceneSpec box_perturbed_scene();
 SceneSpec box_random_scene();

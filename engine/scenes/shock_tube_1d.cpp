@@ -2,6 +2,7 @@
 // tube of seed 003 §3.3 (eqs. 3.52–3.61), with the exact Riemann solution as reference.
 #include <cmath>
 #include <memory>
+#include <vector>
 
 #include "families.h"
 #include "reference/riemann_reference.h"
@@ -18,12 +19,20 @@ struct TubeSetup {
 };
 
 TubeSetup tube_from(const SceneValues& v) {
-  TubeSetup t{v.at("x_lo"), v.at("x_hi"), v.at("x0"), {v.at("rho_l"), 0.0, v.at("p_l")}, {v.at("rho_r"), 0.0, v.at("p_r")},
-              static_cast<std::size_t>(v.at("n_left")), 0};
-  // equal masses: n_right / n_left = (rho_r L_r) / (rho_l L_l)
+  TubeSetup t{v.at("x_lo"),
+              v.at("x_hi"),
+              v.at("x0"),
+              {v.at("rho_l"), v.at("v_l"), v.at("p_l")},
+              {v.at("rho_r"), v.at("v_r"), v.at("p_r")},
+              static_cast<std::size_t>(v.at("n_left")),
+              0};
+  // equal masses: n_right / n_left = (rho_r L_r) / (rho_l L_l), rounded; the right spacing is then
+  // m / rho_r exactly and the right wall moves by less than half a spacing (the density stays exact)
   const double ratio = (t.right.rho * (t.x_hi - t.x0)) / (t.left.rho * (t.x0 - t.x_lo));
   t.n_right = static_cast<std::size_t>(std::llround(ratio * static_cast<double>(t.n_left)));
   if (t.n_right < 1) t.n_right = 1;
+  const double m = t.left.rho * (t.x0 - t.x_lo) / static_cast<double>(t.n_left);
+  t.x_hi = t.x0 + static_cast<double>(t.n_right) * m / t.right.rho;
   return t;
 }
 
@@ -33,7 +42,7 @@ SceneSetup build_tube(const SceneSpec& spec, const Params& prm, const SceneValue
   SceneSetup s{make_particles(prm, spec.dim, n), {}, (t.x0 - t.x_lo) / t.n_left, 0.0};
   Particles& p = s.particles;
   const double dxl = (t.x0 - t.x_lo) / t.n_left, dxr = (t.x_hi - t.x0) / t.n_right;
-  const double m = t.left.rho * dxl;  // = rho_r dx_r up to the rounding of n_right
+  const double m = t.left.rho * dxl;  // = rho_r dx_r (x_hi follows from it)
   const double eta = effective_eta(prm, 1);
   for (std::size_t i = 0; i < n; ++i) {
     const bool left = i < t.n_left;
@@ -58,8 +67,10 @@ std::vector<SceneParam> tube_params(double x_lo, double x_hi, double rl, double 
       {"x_hi", x_hi, -1e3, 1e3, false, "right wall [length]"},
       {"x0", 0.0, -1e3, 1e3, false, "diaphragm position [length]"},
       {"rho_l", rl, 1e-6, 1e6, false, "left density"},
+      {"v_l", 0.0, -1e3, 1e3, false, "left velocity"},
       {"p_l", pl, 1e-9, 1e9, false, "left pressure"},
       {"rho_r", rr, 1e-6, 1e6, false, "right density"},
+      {"v_r", 0.0, -1e3, 1e3, false, "right velocity"},
       {"p_r", pr, 1e-9, 1e9, false, "right pressure"},
   };
 }
@@ -103,6 +114,50 @@ SceneSpec castellanos_scene() {
   s.defaults.physics.conduction = Toggle::Off;       // seed 003 eqs. 3.58-3.61: viscosity only
   s.build = [s](const Params& p, const SceneValues& v) { return build_tube(s, p, v); };
   return s;
+}
+
+namespace {
+
+/// A Riemann problem of the literature on the Sod set-up (M4, conduction, leapfrog, mirror walls).
+SceneSpec riemann_variant(const char* name, const char* description, double x_lo, double x_hi, double x0,
+                          GasState l, GasState r, double n_left, double t_end) {
+  SceneSpec s = sod_scene();
+  s.name = name;
+  s.description = description;
+  s.params = tube_params(x_lo, x_hi, l.rho, l.p, r.rho, r.p, n_left);
+  for (SceneParam& q : s.params) {
+    if (q.name == "x0") q.value = x0;
+    if (q.name == "v_l") q.value = l.v;
+    if (q.name == "v_r") q.value = r.v;
+  }
+  s.defaults.time.t_end = t_end;
+  s.defaults.time.dt_out = t_end / 4.0;
+  s.build = [s](const Params& p, const SceneValues& v) { return build_tube(s, p, v); };
+  return s;
+}
+
+}  // namespace
+
+// Toro, "Riemann Solvers and Numerical Methods for Fluid Dynamics" (3rd ed.), Table 4.1, gamma = 1.4, on
+// his domain [0, 1] (test 5: [0, 1.6]: its right shock reaches x = 1.2 near t = 0.035 and, reflected by
+// the wall, would spoil the star state); Lax (1954) as
+// commonly posed. The walls are mirrors, not Toro's transmissive ends: where a state moves away from a
+// wall, a rarefaction from that wall enters the tube (it stays outside the star region at t_end).
+std::vector<SceneSpec> riemann_variant_scenes() {
+  return {
+      riemann_variant("lax", "Lax's tube, rho,v,p = 0.445,0.698,3.528 | 0.5,0,0.571, t = 0.14", -0.5, 0.5, 0.0,
+                      {0.445, 0.698, 3.528}, {0.5, 0.0, 0.571}, 200, 0.14),
+      riemann_variant("toro1", "Toro test 1: a modified Sod tube with a sonic rarefaction, 1,0.75,1 | 0.125,0,0.1, t = 0.2",
+                      0.0, 1.0, 0.3, {1.0, 0.75, 1.0}, {0.125, 0.0, 0.1}, 300, 0.2),
+      riemann_variant("toro2", "Toro test 2, \"123\": two rarefactions and a near vacuum, 1,-2,0.4 | 1,2,0.4, t = 0.15",
+                      0.0, 1.0, 0.5, {1.0, -2.0, 0.4}, {1.0, 2.0, 0.4}, 200, 0.15),
+      riemann_variant("toro3", "Toro test 3: the left half of the blast wave, p = 1000 | 0.01, t = 0.012", 0.0, 1.0, 0.5,
+                      {1.0, 0.0, 1000.0}, {1.0, 0.0, 0.01}, 200, 0.012),
+      riemann_variant("toro4", "Toro test 4: the right half of the blast wave, p = 0.01 | 100, t = 0.035", 0.0, 1.0, 0.4,
+                      {1.0, 0.0, 0.01}, {1.0, 0.0, 100.0}, 160, 0.035),
+      riemann_variant("toro5", "Toro test 5: the collision of tests 3 and 4's shocks, t = 0.035", 0.0, 1.6, 0.8,
+                      {5.99924, 19.5975, 460.894}, {5.99242, -6.19633, 46.0950}, 320, 0.035),
+  };
 }
 
 }  // namespace sph::scenes

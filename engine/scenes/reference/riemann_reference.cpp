@@ -1,9 +1,16 @@
 // L1 = mean over the particles with x in the window of |f - f_exact| for f = rho, v, P, u, and the max
 // norm of rho; the exact Riemann solution (reference/riemann.cpp) sampled for the profile plots.
+// The star state (p*, u*, Toro §4.2) as the particles have it: the median P and v of the particles at
+// least 4 h inside the exact star region (where P = p* and v = u* exactly) and 4 h away from the contact,
+// with its error |p/p* - 1| and |u - u*| / s, s = |u*|, or the largest sound speed c_max when
+// |u*| < 0.05 c_max (Toro's "123" has u* = 0). There, the star region is a near vacuum a few h wide,
+// so instead the smallest density is compared with the exact one at the particles' positions.
 #include "riemann_reference.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <vector>
 
 namespace sph::scenes {
 namespace {
@@ -11,7 +18,8 @@ namespace {
 class RiemannReference final : public Reference {
  public:
   RiemannReference(GasState l, GasState r, double gamma, double x0, double lo, double hi)
-      : solver_(l, r, gamma, x0), lo_(lo), hi_(hi) {}
+      : solver_(l, r, gamma, x0), x0_(x0), lo_(lo), hi_(hi),
+        c_max_(std::max(std::sqrt(gamma * l.p / l.rho), std::sqrt(gamma * r.p / r.rho))) {}
 
   std::vector<RefColumn> columns() const override {
     return {{"count", "particles compared (x inside the tube)", false},
@@ -19,11 +27,27 @@ class RiemannReference final : public Reference {
             {"L1_v", "mean |v - v_exact|", true},
             {"L1_p", "mean |P - P_exact|", true},
             {"L1_u", "mean |u - u_exact|", true},
-            {"Linf_rho", "max |rho - rho_exact|", true}};
+            {"Linf_rho", "max |rho - rho_exact|", true},
+            {"p_star", "median P of the particles in the star region (NaN before it is 8 h wide)", false},
+            {"p_star_exact", "exact star pressure p*", false},
+            {"p_star_err", "|p_star / p* - 1|", true},
+            {"u_star", "median v of the particles in the star region", false},
+            {"u_star_exact", "exact star velocity u*", false},
+            {"u_star_err", "|u_star - u*| / |u*| (or / c_max where |u*| < 0.05 c_max)", true},
+            {"rho_min", "smallest particle density inside the waves' fan (NaN before it holds a particle)", false},
+            {"rho_min_exact", "smallest exact density at those particles' positions", false},
+            {"rho_min_err", "|rho_min / rho_min_exact - 1|: the near-vacuum error of two rarefactions (Toro's \"123\"); "
+             "NaN for other wave patterns", true}};
   }
 
   std::vector<double> evaluate(const Particles& p, double t) const override {
     double count = 0, l1r = 0, l1v = 0, l1p = 0, l1u = 0, linf = 0;
+    double rmin = std::numeric_limits<double>::infinity(), rmin_exact = rmin;
+    const GasState L0 = solver_.sample(-1e300, 0.0), R0 = solver_.sample(1e300, 0.0);
+    auto same = [](const GasState& a, const GasState& b) {
+      return a.rho == b.rho && a.v == b.v && a.p == b.p;
+    };
+    auto in_fan = [&](const GasState& s) { return !same(s, L0) && !same(s, R0); };
     const bool hp = p.has(Field::Pressure), hu = p.has(Field::Energy), hr = p.has(Field::Density);
     for (std::size_t i = 0; i < p.fluid(); ++i) {
       const double x = p.x[0][i];
@@ -35,10 +59,45 @@ class RiemannReference final : public Reference {
       if (hp) l1p += std::abs(p[Field::Pressure][i] - s.p);
       if (hu) l1u += std::abs(p[Field::Energy][i] - solver_.internal_energy(x, t));
       linf = std::max(linf, drho);
+      if (in_fan(s)) {  // the waves' fan: a wall's own rarefaction stays out of the minimum
+        if (hr) rmin = std::min(rmin, p[Field::Density][i]);
+        rmin_exact = std::min(rmin_exact, s.rho);
+      }
       ++count;
     }
     if (count > 0) { l1r /= count; l1v /= count; l1p /= count; l1u /= count; }
-    return {count, l1r, l1v, l1p, l1u, linf};
+    std::vector<double> out{count, l1r, l1v, l1p, l1u, linf};
+    const RiemannStar star = solver_.star();
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    double ps = nan, us = nan;
+    if (hp && t > 0.0) {
+      auto in_star = [&](double x) {
+        const GasState s = solver_.sample(x, t);
+        return std::abs(s.p - star.p) <= 1e-9 * star.p && std::abs(s.v - star.v) <= 1e-9 * (std::abs(star.v) + c_max_);
+      };
+      const double contact = x0_ + star.v * t;
+      std::vector<double> pv, vv;
+      for (std::size_t i = 0; i < p.fluid(); ++i) {
+        const double x = p.x[0][i], m = 4.0 * p[Field::H][i];
+        if (x < lo_ || x > hi_ || std::abs(x - contact) < m) continue;
+        if (!in_star(x - m) || !in_star(x + m) || !in_star(x)) continue;
+        pv.push_back(p[Field::Pressure][i]);
+        vv.push_back(p.v[0][i]);
+      }
+      auto median = [](std::vector<double>& v) {
+        std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+        return v[v.size() / 2];
+      };
+      if (!pv.empty()) { ps = median(pv); us = median(vv); }
+    }
+    const double uscale = std::abs(star.v) >= 0.05 * c_max_ ? std::abs(star.v) : c_max_;
+    out.insert(out.end(), {ps, star.p, std::abs(ps / star.p - 1.0), us, star.v, std::abs(us - star.v) / uscale});
+    // only for two rarefactions (no shock, and the contact carries no density jump when the states are
+    // symmetric, as in "123"): elsewhere the minimum would measure the smearing of a jump
+    const bool two_rarefactions = star.p < L0.p && star.p < R0.p;
+    if (!hr || !two_rarefactions || !std::isfinite(rmin)) rmin = rmin_exact = nan;
+    out.insert(out.end(), {rmin, rmin_exact, std::abs(rmin / rmin_exact - 1.0)});
+    return out;
   }
 
   std::string description() const override {
@@ -72,7 +131,7 @@ class RiemannReference final : public Reference {
 
  private:
   RiemannSolver solver_;
-  double lo_, hi_;
+  double x0_, lo_, hi_, c_max_;
 };
 
 }  // namespace
