@@ -73,6 +73,7 @@ bad liquid_key_on_gas 3 "liquid.c0" run sod --set liquid.c0=10
 bad slot_not_for_scene 3 "physics.eos" run sod --set physics.eos=tait
 bad nonsense_combination 3 "physics.energy" run box_lattice --set physics.eos=isothermal
 bad negative_until 2 "until" run sod --until -3
+bad h_solve_fails_at_start 5 "kernel.eta" run sod --set eta=0.6
 
 # I/O error
 "$sph" run sod --set scene.n_left=50 --until 0.01 --out /proc/sph-cannot-write 2> "$work/io.err" > /dev/null
@@ -83,6 +84,11 @@ check "io error" 4 $?
 check "diverged" 5 $?
 ok "diverged message" grep -q "particle [0-9]* has a non-finite .* at step [0-9]*" "$work/div.err"
 ok "no particle file of the diverged state" test ! -e "$work/div/particles_00004.csv"
+# a timestep far too long for the h solve: exit 5, the message names what failed (no "particle -1")
+"$sph" run sod --set dt=0.01 --out "$work/dt" 2> "$work/dt.err" > /dev/null
+check "dt too long" 5 $?
+ok "dt too long: names the smoothing length" grep -q "smoothing length" "$work/dt.err"
+ok "dt too long: no particle -1" bash -c "! grep -q 'particle -1' '$work/dt.err'"
 
 # headless frames (OSMesa build): no DISPLAY needed; at least two 640x480 PNGs for a 2D and a 1D scene
 png_size() { od -An -tu1 -j16 -N8 "$1" | awk '{print $3*256+$4 "x" $7*256+$8}'; }

@@ -86,6 +86,13 @@ World::World(const RunConfig& cfg)
       u[i] = cfg_.scene->initial_pressure(p_.pos(i), cfg_.values) / ((cfg_.params.gas.gamma - 1.0) * rho[i]);
     evaluate();
   }
+  // the start must be a state the h solve reaches (seed 000 eq. 3.5.1): otherwise nothing runs or is written
+  const std::size_t failed = stats_->density.not_converged;
+  if (failed > 0 && p_.has(Field::Density) && cfg_.params.physics.smoothing == HMode::Variable)
+    throw DivergedError(-1, 0, 0.0,
+                        "the smoothing-length solve did not converge for " + std::to_string(failed) + " of " +
+                            std::to_string(p_.fluid()) + " particles at the start (kernel.eta = " +
+                            std::to_string(eta()) + "): change kernel.eta, or raise h.max_iter");
   current_ = true;
   reorder();
   check_finite();
