@@ -15,7 +15,8 @@
 // neighbour), and points beyond the outflow end leave.
 // Timestep (before the Courant factor): the seed's CFL condition dt <= dx / (2 max|u|) (§4) and, for the
 // viscous scheme, the explicit diffusion limit dt <= dx^2 / (2 eps), which the seed does not state but
-// which binds from about 400 points at eps = 0.005 (forward Euler on u_xx is unstable beyond it).
+// which binds where dx < eps (from about 500 points on [-0.5, 2] at eps = 0.005; forward Euler on u_xx
+// is unstable beyond it).
 #include <algorithm>
 #include <cmath>
 #include <memory>
