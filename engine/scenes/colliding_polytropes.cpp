@@ -22,11 +22,12 @@
 // remnant swells to rho_max ~ 0.2 rho_c (t = 5.1) and falls back.
 //
 // Pass criteria at the defaults (2 x 2000 particles, t_end = 6; figures in the README):
-//  - |dE/E| <= 1e-2 (9.8e-3; seed 2: 9.4e-3). The kernel softening lacks its grad-h term (see
+//  - |dE/E| <= 1e-2 (9.7e-3 with the guarded tree; seed 2 before it: 9.4e-3). The kernel softening lacks its grad-h term (see
 //    gravity/softening.h), so energy leaks as h changes: the error falls as N^(-2/3) (2.3e-2 and 1.4e-2
 //    at 500 and 1000 per star) and Plummer softening with eps = 0.05 gives 4.2e-4;
-//  - |P| <= 1e-5 (4.3e-6, along z: the tree's forces are not exactly antisymmetric; P_x and P_y stay
-//    ~1e-15 by the set-up's symmetry); the centre of mass within 1e-5 R of the origin (4.7e-6).
+//  - |P| <= 5e-5 (2.3e-5 with the guarded tree, 4.3e-6 before it: the tree's forces are not exactly
+//    antisymmetric, and the guard accepts cells per target); the centre of mass within 5e-5 R of the
+//    origin (3.2e-5; 4.7e-6 before).
 #include <cmath>
 #include <numbers>
 
@@ -44,7 +45,7 @@ SceneSpec colliding_polytropes_scene() {
   s.name = "colliding_polytropes";
   s.category = "gravity / self-gravitating spheres (seed 003)";
   s.description =
-      "seed 003 §3.4.4: two relaxed n = 1 polytropes collide head-on and merge (|dE/E| <= 1e-2, |P| <= 1e-5 to t = 6)";
+      "seed 003 §3.4.4: two relaxed n = 1 polytropes collide head-on and merge (|dE/E| <= 1e-2, |P| <= 5e-5 to t = 6)";
   s.dim = 3;
   s.params = {{"n", 2000, 8, 1e6, true, "particles per star"},
               {"d", 4.0, 2.0, 1e3, false, "distance between the centres along x [R] (2: touching)"},

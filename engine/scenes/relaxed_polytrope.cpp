@@ -10,10 +10,11 @@ namespace sph::scenes {
 namespace {
 
 /// Everything the relaxed star depends on.
-using Key = std::tuple<std::size_t, std::uint64_t, double, double, double, double, double, int, double, double, int>;
+using Key =
+    std::tuple<std::size_t, std::uint64_t, double, double, double, double, double, double, int, double, double, int>;
 
 Key key_of(const Params& prm, std::size_t n, std::uint64_t seed, double t_relax) {
-  return {n, seed, t_relax, prm.gas.gamma, prm.gas.K, prm.gravity.G, prm.gravity.theta,
+  return {n, seed, t_relax, prm.gas.gamma, prm.gas.K, prm.gravity.G, prm.gravity.theta, prm.gravity.tol,
           static_cast<int>(prm.kernel.type), prm.kernel.eta, prm.h.tol, prm.h.max_iter};
 }
 
@@ -31,6 +32,7 @@ std::shared_ptr<const RelaxedStar> relax(const Params& prm, std::size_t n, std::
   q.gas.K = prm.gas.K;
   q.gravity.G = prm.gravity.G;
   q.gravity.theta = prm.gravity.theta;
+  q.gravity.tol = prm.gravity.tol;
   q.time.t_end = t_relax;
   World w(cfg);
   w.advance_to(t_relax);
