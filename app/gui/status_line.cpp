@@ -32,6 +32,19 @@ void status_line(GuiState& s, const FrameStats& stats) {
     ImGui::SameLine();
     ImGui::TextColored(ImVec4(1.f, 0.35f, 0.35f, 1.f), "   REC every %g", f->record_every);
   }
+  if (!f->warnings.empty()) {  // what the run tolerated: the newest first kind in full on hover
+    ImGui::SameLine();
+    const RunWarning& w = f->warnings.front();
+    ImGui::TextColored(ImVec4(1.f, 0.7f, 0.2f, 1.f), "   %zu warning%s: [%s] %s", f->warnings.size(),
+                       f->warnings.size() == 1 ? "" : "s", w.kind.c_str(), w.message.c_str());
+    if (ImGui::IsItemHovered()) {
+      ImGui::BeginTooltip();
+      for (const RunWarning& x : f->warnings)
+        ImGui::Text("[%s] from step %lld (t = %.4g): %s", x.kind.c_str(), static_cast<long long>(x.step), x.t,
+                    x.message.c_str());
+      ImGui::EndTooltip();
+    }
+  }
   if (!s.message.empty()) {
     ImGui::SameLine();
     ImGui::TextColored(s.message_is_error ? ImVec4(1.f, 0.45f, 0.45f, 1.f) : ImVec4(0.6f, 0.6f, 0.65f, 1.f), "   %s",

@@ -68,6 +68,15 @@ std::unique_ptr<FrameRecorder> make_recorder(const RunOptions& opt) {
 }
 #endif
 
+/// The run's "warnings" section on stderr: what it tolerated (nothing is printed for a clean run).
+void print_warnings(const World& world) {
+  if (world.warnings().empty()) return;
+  std::fprintf(stderr, "warnings (%zu):\n", world.warnings().size());
+  for (const RunWarning& w : world.warnings())
+    std::fprintf(stderr, "  [%s] from step %lld (t = %g, %lld checks): %s\n", w.kind.c_str(),
+                 static_cast<long long>(w.step), w.t, static_cast<long long>(w.times), w.message.c_str());
+}
+
 }  // namespace
 
 int list_command() {
@@ -96,9 +105,11 @@ int run_command(const RunOptions& opt) {
   }
   if (opt.threads > 0) omp_set_num_threads(opt.threads);
   const double t_end = cfg.params.time.t_end;
+  std::unique_ptr<World> world_ptr;  // outlives the try: a run that stops still reports its warnings
   try {
     const auto t0 = std::chrono::steady_clock::now();
-    World world(cfg);
+    world_ptr = std::make_unique<World>(cfg);
+    World& world = *world_ptr;
 #ifdef SPH_HAVE_FRAMES
     std::unique_ptr<FrameRecorder> rec;
     RunOptions fopt = opt;  // with the colour-by field resolved
@@ -176,6 +187,7 @@ int run_command(const RunOptions& opt) {
 #ifdef SPH_HAVE_FRAMES
     progress.finish();
 #endif
+    if (out) out->write_warnings(world);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (!opt.quiet) {
       const double psteps = static_cast<double>(world.steps()) * static_cast<double>(world.particles().size());
@@ -195,6 +207,7 @@ int run_command(const RunOptions& opt) {
         std::printf("%s\n", line.c_str());
       }
     }
+    print_warnings(world);
 #ifdef SPH_HAVE_FRAMES
     if (rec) {
       if (!rec->flush(&err)) throw IoError(err);  // PNGs are compressed in the background
@@ -208,6 +221,7 @@ int run_command(const RunOptions& opt) {
 #endif
   } catch (const DivergedError& e) {
     std::fprintf(stderr, "sph: %s; the state was not written\n", e.what());
+    if (world_ptr) print_warnings(*world_ptr);
     return kDiverged;
   } catch (const IoError& e) {
     std::fprintf(stderr, "sph: I/O error: %s\n", e.what());

@@ -9,7 +9,8 @@ enum ExitCode : int {
   kUsage = 2,         ///< bad command line (unknown flag, malformed value)
   kInvalidScene = 3,  ///< unknown scene, malformed scene file, unknown key or value out of range
   kIoError = 4,       ///< cannot create or write the output
-  kDiverged = 5,      ///< NaN/inf in the state: the run stopped, nothing of the bad state was written
+  kDiverged = 5,      ///< NaN/inf, a finite blow-up (energy, timestep), a particle through a wall or a start
+                      ///< the h solve cannot reach: the run stopped, nothing of the bad state was written
 };
 
 }  // namespace sph::cli

@@ -6,12 +6,15 @@
 #include "cli_converge.h"
 #include "cli_run.h"
 #include "exit_codes.h"
+#include "number_checks.h"
 
 int main(int argc, char** argv) {
   using namespace sph::cli;
   CLI::App app{"sph: SPH sandbox, headless runs.\n"
                "Exit codes: 0 ok, 1 internal error, 2 usage error, 3 invalid scene (unknown scene, malformed\n"
-               "file, unknown key, value out of range), 4 I/O error, 5 diverged (NaN/inf in the state)."};
+               "file, unknown key, value out of range), 4 I/O error, 5 diverged (NaN/inf in the state, a\n"
+               "finite blow-up of the energy or the timestep, a particle through a wall, a start the h solve\n"
+               "cannot reach). What a run tolerated is listed under \"warnings\" (and in warnings.csv)."};
   app.require_subcommand(1);
   RunOptions opt;
   app.add_subcommand("list", "list the built-in scenes");
@@ -20,14 +23,14 @@ int main(int argc, char** argv) {
   for (auto* sub : {check, run}) {
     sub->add_option("scene", opt.scene, "built-in scene name or JSON scene file")->required();
     sub->add_option("--set", opt.sets, "override a parameter: key=value (repeatable; see scene.json for keys)");
-    sub->add_option("--until", opt.until, "end time (overrides time.t_end)")->check(CLI::NonNegativeNumber);
+    sub->add_option("--until", opt.until, "end time (overrides time.t_end)")->check(finite_from(0.0, false));
   }
   run->add_option("--out", opt.out, "output directory: scene.json, diagnostics.csv, particles_*.csv, errors.csv");
   run->add_option("--threads", opt.threads, "OpenMP threads")->check(CLI::Range(1, 1024));
   run->add_flag("--quiet", opt.quiet, "no summary line");
 #ifdef SPH_HAVE_FRAMES  // OSMesa build: image sequences
   run->add_option("--frames", opt.frames, "write PNG frames into this directory");
-  run->add_option("--every", opt.every, "simulated time between frames");
+  run->add_option("--every", opt.every, "simulated time between frames")->check(finite_from(0.0, true));
   run->add_option("--size", opt.size, "frame size WIDTHxHEIGHT (even numbers)");
   run->add_option("--color-by", opt.color_by, "field to colour by (rho, p, u, speed, h, vx, ...; default rho, or the scene's first field)");
   run->add_option("--cmap", opt.cmap, "colour map: viridis, magma, cividis, coolwarm");
@@ -46,7 +49,7 @@ int main(int argc, char** argv) {
   converge->add_option("--key", conv.key, "parameter varied (default: the scene's, e.g. scene.n)");
   converge->add_option("--values", conv.values, "comma-separated values of the key (default: the scene's)");
   converge->add_option("--until", conv.until, "time of the comparison (default: the scene's)")
-      ->check(CLI::PositiveNumber);
+      ->check(finite_from(0.0, true));
   converge->add_option("--column", conv.column, "reference column compared (default: the primary error)");
   converge->add_option("--set", conv.sets, "override a parameter of every run: key=value (repeatable)");
   converge->add_option("--out", conv.out, "output directory (default converge_SCENE): converge.csv, .md, .png");

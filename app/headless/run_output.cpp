@@ -26,6 +26,7 @@ RunOutput::RunOutput(const std::string& dir, const World& world) : dir_(dir) {
   if (world.has_reference()) {
     errors_ = open_file(dir + "/errors.csv");
     errors_ << "# " << world.reference()->description() << "\n" << errors_csv_header(world.reference_columns()) << "\n";
+    valid_until_ = world.reference()->valid_until();
   }
   // particle columns: id, position, velocity, then the scene's state fields, then the kind if it has walls
   for (Field f : {Field::Mass, Field::Density, Field::Pressure, Field::Energy, Field::H})
@@ -71,9 +72,22 @@ void RunOutput::write_particles(const World& world) {
   if (!f) throw IoError("cannot write " + path);
   ++files_;
   if (world.has_reference()) {
-    errors_ << errors_csv_row(world.time(), world.reference_values()) << "\n";
+    errors_ << errors_csv_row(world.time(), world.reference_values(), world.time() <= valid_until_ * (1.0 + 1e-12))
+            << "\n";
     if (!errors_) throw IoError("cannot write " + dir_ + "/errors.csv");
   }
+}
+
+void RunOutput::write_warnings(const World& world) {
+  const std::string path = dir_ + "/warnings.csv";
+  std::ofstream f = open_file(path);
+  f << "kind,step,t,particle,checks,message\n";
+  for (const RunWarning& w : world.warnings()) {
+    std::string msg = w.message;  // one CSV field: quoted, inner quotes doubled
+    for (std::size_t k = msg.find('"'); k != std::string::npos; k = msg.find('"', k + 2)) msg.insert(k, 1, '"');
+    f << w.kind << "," << w.step << "," << w.t << "," << w.particle << "," << w.times << ",\"" << msg << "\"\n";
+  }
+  if (!f) throw IoError("cannot write " + path);
 }
 
 }  // namespace sph::cli

@@ -1,4 +1,5 @@
-// The files of `sph run --out DIR`: scene.json, diagnostics.csv, particles_NNNNN.csv, errors.csv.
+// The files of `sph run --out DIR`: scene.json, diagnostics.csv, particles_NNNNN.csv, errors.csv,
+// warnings.csv.
 #pragma once
 #include <fstream>
 #include <string>
@@ -18,6 +19,9 @@ class RunOutput {
   RunOutput(const std::string& dir, const World& world);
   void write_diagnostics(const World& world);  ///< one row of diagnostics.csv
   void write_particles(const World& world);    ///< the next particles_NNNNN.csv (+ a row of errors.csv)
+  /// warnings.csv: what the run tolerated (kind, first step and time, particle id, checks, message); a
+  /// header only for a clean run.
+  void write_warnings(const World& world);
   int particle_files() const { return files_; }
 
  private:
@@ -25,6 +29,7 @@ class RunOutput {
   std::ofstream diag_, errors_;
   std::vector<Field> columns_;  ///< the fields of the particle files, after id, x and v
   int files_ = 0;
+  double valid_until_ = 0.0;  ///< the reference applies up to this time (the "valid" column)
 };
 
 }  // namespace sph::cli

@@ -20,6 +20,7 @@ SceneSpec tube2d_scene() {
   s.defaults.time.dt_out = 1.0;
   s.allow(Slot::Eos, {"ideal_gas", "isothermal"});
   s.allow(Slot::Walls, {"none"});
+  s.energy_bound = 1e-3;  // measured to t = 20: 1.6e-5 (leapfrog)
   s.params = {{"n_side", 16, 2, 2000, true, "lattice particles per unit length on the dense side (seed: 16)"},
               {"u0", 0.05, 1e-12, 1e12, false, "initial specific internal energy (seed 000: 0.05)"}};
   s.build = [s](const Params& prm, const SceneValues& v) {

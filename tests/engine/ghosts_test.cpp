@@ -339,5 +339,25 @@ TEST(Boundaries, WallReflectsPositionAndNormalVelocity) {
   for (int i = 0; i < 4; ++i) EXPECT_DOUBLE_EQ(p.vel(i).norm2(), before.vel(i).norm2());
 }
 
+TEST(Boundaries, WallCrossingsAreCountedAndEscapesFound) {
+  // particles 1 and 3 crossed a wall of [0, 1]; particle 3 is more than a box length beyond it, so its
+  // reflection still lies outside: it escaped (the World stops the run, naming it)
+  Domain d;
+  d.bc = {Boundary::Wall, Boundary::Open, Boundary::Open};
+  Particles p(1, 5, FieldSet{});
+  const double xs[5] = {0.5, -0.1, 0.9, 2.5, 0.2};
+  for (int i = 0; i < 5; ++i) p.x[0][i] = xs[i];
+  const WallCrossings w = apply_boundaries(d, p);
+  EXPECT_EQ(w.reflected, 2u);
+  EXPECT_EQ(w.first_reflected, 1u);
+  EXPECT_EQ(w.escaped, 1u);
+  EXPECT_EQ(w.first_escaped, 3u);
+  Particles inside(1, 2, FieldSet{});
+  inside.x[0] = {0.0, 1.0};  // on the walls is inside
+  const WallCrossings none = apply_boundaries(d, inside);
+  EXPECT_EQ(none.reflected, 0u);
+  EXPECT_EQ(none.escaped, 0u);
+}
+
 }  // namespace
 }  // namespace sph

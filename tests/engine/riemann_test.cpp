@@ -160,6 +160,26 @@ TEST(Riemann, Seed003TubeSatisfiesPressureFunction) {
   EXPECT_GT(p, r.p);
 }
 
+TEST(Riemann, WaveSpanBoundsTheFan) {
+  // Sod: the left rarefaction's head moves at -c_L = -sqrt(1.4); the shock at 1.7522 (Toro §4.3.3,
+  // Table 4.3's shock position at t = 0.25 is 0.5 + 0.25 S). Outside the span the initial states hold.
+  const RiemannSolver sod({1.0, 0.0, 1.0}, {0.125, 0.0, 0.1}, 1.4);
+  const WaveSpan w = sod.span();
+  EXPECT_NEAR(w.s_min, -std::sqrt(1.4), 1e-12);
+  EXPECT_NEAR(w.s_max, 1.7522, 1e-4);
+  const double t = 0.2, eps = 1e-9;
+  EXPECT_EQ(sod.sample(w.s_min * t - eps, t).p, 1.0);
+  EXPECT_LT(sod.sample(w.s_min * t + 1e-4, t).p, 1.0);
+  EXPECT_EQ(sod.sample(w.s_max * t + eps, t).p, 0.1);
+  EXPECT_GT(sod.sample(w.s_max * t - eps, t).p, 0.1);
+  // a right-moving shock and a right rarefaction (Toro test 4 mirrored): the span's edges are the
+  // outermost wave speeds whatever their kind
+  const RiemannSolver t4({1.0, 0.0, 0.01}, {1.0, 0.0, 100.0}, 1.4);
+  const WaveSpan w4 = t4.span();
+  EXPECT_LT(w4.s_min, 0.0);
+  EXPECT_NEAR(w4.s_max, std::sqrt(140.0), 1e-9);  // the right fan's head: c_R = sqrt(1.4 * 100)
+}
+
 TEST(Riemann, BadInputThrows) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THROW(RiemannSolver({0.0, 0.0, 1.0}, kSodR, kGamma), std::invalid_argument);

@@ -36,7 +36,7 @@ ok "1 and 2 threads: identical particle files" cmp -s "$work/threads1/particles_
 "$sph" run hydrostatic_tank --set scene.dx=0.1 --until 0.02 --set dt_out=0.01 --out "$work/tank" > /dev/null
 check "run hydrostatic_tank" 0 $?
 ok "liquid particle header" grep -q "^id,x,y,z,vx,vy,vz,m,rho,p,h,kind$" "$work/tank/particles_00002.csv"
-ok "liquid errors header" grep -q "^t,p_mid,p_mid_exact,err_mid,L1_p_rel$" "$work/tank/errors.csv"
+ok "liquid errors header" grep -q "^t,p_mid,p_mid_exact,err_mid,L1_p_rel,valid$" "$work/tank/errors.csv"
 ok "wall particles are marked" grep -q ",1$" "$work/tank/particles_00002.csv"
 # scene.json lists only the parameters of the stages the scene runs
 "$sph" run box_lattice --until 0 --out "$work/lat" > /dev/null; check "run box_lattice" 0 $?
@@ -125,6 +125,34 @@ bad converge_junk_value 3 "abc" converge burgers_upwind --values 60,abc
 bad converge_bad_key 3 "scene.nope" converge burgers_upwind --key scene.nope --values 1,2
 bad converge_diverged 5 "diverged" converge sod --set time.integrator=euler --set time.dt=0.05 --values 40,80
 
+
+# runs that never go bad silently: a clean run has an empty warnings.csv; a degraded one says so by
+# name (stderr and warnings.csv) and still exits 0; an unstable one stops with exit 5 naming a particle
+ok "clean run: warnings.csv header only" test "$(wc -l < "$work/sod/warnings.csv")" -eq 1
+"$sph" run sod --set time.integrator=euler --out "$work/euler" > /dev/null 2> "$work/euler.err"; check "euler sod" 0 $?
+ok "euler: warnings section" grep -q "^warnings (1):" "$work/euler.err"
+ok "euler: names the integrator" grep -q "forward Euler is unstable" "$work/euler.err"
+ok "euler: warnings.csv row" grep -q '^energy,' "$work/euler/warnings.csv"
+"$sph" run sod --set time.cfl=0.7 --out "$work/cfl7" > /dev/null 2> "$work/cfl7.err"; check "cfl 0.7 sod" 0 $?
+ok "cfl 0.7: names time.cfl" grep -q "lower time.cfl" "$work/cfl7.err"
+# (what was written before the stop is the good start and steps within 10% of the energy scale)
+"$sph" run sod --set time.cfl=0.9 --out "$work/cfl9" > /dev/null 2> "$work/cfl9.err"; check "cfl 0.9 sod" 5 $?
+ok "cfl 0.9: says why" grep -q "total energy grew" "$work/cfl9.err"
+ok "cfl 0.9: names a particle" grep -q "particle [0-9]* has the largest acceleration" "$work/cfl9.err"
+ok "cfl 0.9: no runaway energy written" awk -F, '!/^#/ && NR > 2 { if ($7 > 1.6 || $7 < 1.2) bad = 1 } END { exit bad }' "$work/cfl9/diagnostics.csv"
+"$sph" run toro1 --set scene.x_lo=0 --set scene.n_left=300 --out "$work/t1" > /dev/null 2> "$work/t1.err"; check "toro1 on [0,1]" 0 $?
+ok "toro1 on [0,1]: reference warning" grep -q "\[reference\]" "$work/t1.err"
+ok "toro1 on [0,1]: errors.csv marks invalid rows" test "$(tail -1 "$work/t1/errors.csv" | awk -F, '{print $NF}')" = 0
+ok "toro1 on [0,1]: first rows valid" test "$(grep -v '^#' "$work/t1/errors.csv" | sed -n 2p | awk -F, '{print $NF}')" = 1
+# numeric flags: NaN, inf and out-of-range values are usage errors naming the flag
+bad until_nan 2 "until" run sod --until nan
+bad until_negative 2 "until" run sod --until -3
+bad until_inf 2 "until" run sod --until inf
+if "$sph" run --help | grep -q -- "--frames"; then
+  bad every_zero 2 "every" run sod --frames "$work/fz" --every 0
+  bad every_nan 2 "every" run sod --frames "$work/fn" --every nan
+fi
+bad converge_until_zero 2 "until" converge sod --until 0
 
 echo "$passes passed, $fails failed"
 [ "$fails" -eq 0 ]

@@ -2,6 +2,7 @@
 // the diagnostics and the GUI's status line.
 #pragma once
 #include <cstddef>
+#include <cstdint>
 
 namespace sph {
 
@@ -9,6 +10,7 @@ struct DensityStats {
   double mean_iterations = 0.0;    ///< Newton-Raphson iterations per particle, averaged
   int max_iterations = 0;          ///< worst particle
   std::size_t not_converged = 0;   ///< particles that hit h.max_iter without converging
+  std::int64_t first_not_converged = -1;  ///< the id of the first of them (lowest storage index), or -1
   std::size_t bisections = 0;      ///< Newton steps replaced by bisection of the bracket
   double mean_neighbours = 0.0;    ///< mean count of j with r < support h_i (self included)
 };

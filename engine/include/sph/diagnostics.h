@@ -30,8 +30,9 @@ struct Diagnostics {
 /// CSV header line and row for diagnostics.csv.
 std::string diagnostics_csv_header();
 std::string diagnostics_csv_row(const Diagnostics& d);
-/// errors.csv: "t," then the reference's column names; a row is t then the values.
+/// errors.csv: "t," then the reference's column names, then "valid"; a row is t, the values, and 1 while
+/// the reference applies (t <= Reference::valid_until()), else 0.
 std::string errors_csv_header(const std::vector<RefColumn>& columns);
-std::string errors_csv_row(double t, const std::vector<double>& values);
+std::string errors_csv_row(double t, const std::vector<double>& values, bool valid);
 
 }  // namespace sph

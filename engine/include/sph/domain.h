@@ -3,6 +3,8 @@
 // real ones, so the neighbour search and the physics loops never special-case a boundary.
 #pragma once
 #include <array>
+#include <cstddef>
+#include <cstdint>
 
 #include "sph/particles.h"
 
@@ -28,7 +30,14 @@ void copy_ghost_velocity(Particles& p);
 void copy_ghost_field(Particles& p, Field f);
 void copy_ghost_fields(Particles& p, FieldSet fields);
 
+/// What apply_boundaries had to do at the walls: particles that had crossed one (reflected back), and
+/// particles so far beyond that the reflection leaves them outside the domain (they escaped).
+struct WallCrossings {
+  std::size_t reflected = 0, escaped = 0;
+  std::size_t first_reflected = SIZE_MAX, first_escaped = SIZE_MAX;  ///< lowest storage indices
+};
+
 /// Wrap real particles into periodic axes and reflect those that crossed a wall (specular bounce).
-void apply_boundaries(const Domain& d, Particles& p);
+WallCrossings apply_boundaries(const Domain& d, Particles& p);
 
 }  // namespace sph

@@ -3,6 +3,7 @@
 // the exact curves to draw over the particles. errors.csv, the GUI's plots and the headless overlays
 // take whatever it returns.
 #pragma once
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -38,6 +39,9 @@ class Reference {
   virtual ReferenceCurves curves(const Domain&, double) const { return {}; }
   /// The column plotted as "the error" against time.
   virtual int primary() const { return 0; }
+  /// The time up to which the comparison means what it says (e.g. until a wave reaches a wall and the
+  /// unbounded exact solution no longer applies); infinity when it always applies.
+  virtual double valid_until() const { return std::numeric_limits<double>::infinity(); }
   /// Measured/exact column pairs the GUI plots together against time (e.g. the drop's semi-axes).
   virtual std::vector<std::pair<int, int>> series() const { return {}; }
 };

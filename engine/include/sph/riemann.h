@@ -8,6 +8,7 @@ namespace sph {
 
 struct GasState { double rho, v, p; };               // density, velocity, pressure
 struct RiemannStar { double p, v; int iterations; }; // star-region pressure and velocity
+struct WaveSpan { double s_min, s_max; };            // speeds of the fan's left and right edges
 
 /// Exact solution of the Riemann problem L | R at x0 (seed 003 eqs. 3.20-3.51; Toro ch. 4).
 /// Immutable after construction: every const member is thread-safe and deterministic.
@@ -16,6 +17,8 @@ class RiemannSolver {
   /// throws std::invalid_argument on non-positive rho/p, gamma<=1 or a vacuum-generating state.
   RiemannSolver(GasState left, GasState right, double gamma, double x0 = 0.0);
   RiemannStar star() const;
+  /// Speeds of the outermost edges of the waves (shock speed or rarefaction head), Toro §4.5.
+  WaveSpan span() const;
   /// State at position x and time t >= 0 (t == 0 gives the initial discontinuity).
   GasState sample(double x, double t) const;
   /// specific internal energy p/((gamma-1) rho) at (x,t)

@@ -16,6 +16,7 @@
 #include "sph/config.h"
 #include "sph/density.h"
 #include "sph/diagnostics.h"
+#include "sph/run_warning.h"
 #include "sph/snapshot.h"
 
 namespace sph {
@@ -51,6 +52,7 @@ struct StepperFrame {
   std::vector<std::pair<int, int>> ref_series;  ///< measured/exact column pairs plotted together
   std::vector<std::string> stages; ///< the stages the World runs, in pipeline order
   DensityStats density;            ///< last density solve
+  std::vector<RunWarning> warnings;  ///< what this World's run has tolerated so far (World::warnings)
   RunConfig config;                ///< scene, adopted params and scene values of this World
   std::uint64_t params_version = 0;///< the last mailbox version adopted (0 = none yet)
   std::vector<HistorySample> history;  ///< this World's diagnostics against time (decimated, <= 2048)

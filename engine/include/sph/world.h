@@ -14,6 +14,7 @@
 #include "sph/integrator.h"
 #include "sph/kernel.h"
 #include "sph/neighbours.h"
+#include "sph/run_warning.h"
 #include "sph/snapshot.h"
 
 namespace sph {
@@ -30,13 +31,17 @@ struct StageTiming {
   std::int64_t calls = 0;
 };
 
-/// A NaN or inf appeared in the state: which particle (id), which field, at which step.
+/// The run cannot go on: a NaN or inf appeared in the state (which particle (id), which field, at which
+/// step), or a check found a blow-up that is still finite (the reason says which).
 struct DivergedError : std::runtime_error {
   DivergedError(std::int64_t particle, std::int64_t step, double t, const std::string& field);
+  /// A finite blow-up: `reason` is the whole explanation (it names the particle where there is one).
+  DivergedError(std::int64_t particle, std::int64_t step, double t, const std::string& field, const std::string& reason);
   std::int64_t particle, step;
   double t;
   std::string field;
 };
+
 
 class World {
  public:
@@ -97,6 +102,9 @@ class World {
   /// guard (the tree overlay); empty when the scene's gravity is not the tree or k is out of range.
   std::vector<TreeCell> tree_cells(std::size_t k) const;
 
+  /// What the run has tolerated so far (empty for a clean run), in the order first found.
+  const std::vector<RunWarning>& warnings() const { return warnings_; }
+
   /// Evaluate the stages for the current state (done automatically by step()).
   void evaluate();
 
@@ -111,9 +119,20 @@ class World {
   void adopt(Particles&& fresh);
   /// Permutes the particle arrays into Morton order (the fluid; walls once) and updates by_id().
   void reorder();
+  /// Boundaries (wrap, reflect) with their wall crossings tallied for check_walls().
+  void bound();
   void check_finite() const;
-  /// Throws DivergedError when E_tot has grown far beyond its initial scale (a finite blow-up).
+  /// Throws DivergedError when E_tot has grown far beyond its initial scale (a finite blow-up); warns
+  /// when a scene that conserves energy drifts beyond its SceneSpec::energy_bound.
   void check_energy();
+  /// Throws when a particle escaped through a wall; warns when particles had to be reflected back.
+  void check_walls();
+  void check_h_solve();    ///< warns when the h solve did not converge for some particles
+  void check_reference();  ///< warns when the run passes the time its reference applies to
+  /// Adds a warning, or counts one more of its kind (and with `latest`, takes the new message).
+  void warn(const std::string& kind, std::int64_t particle, const std::string& message, bool latest = false);
+  /// The id of the particle with the largest acceleration (lowest index among equals).
+  std::int64_t fastest_particle() const;
   PhaseSpace phase_space();
 
   RunConfig cfg_;
@@ -138,6 +157,9 @@ class World {
   double t_ = 0.0, dt_last_ = 0.0;
   double dt_first_ = 0.0;     ///< the first adaptive dt (a collapse far below it is a blow-up)
   double energy_scale_ = -1.0, energy0_ = 0.0;  ///< |E_kin| + |E_int| + |E_pot| and E_tot after step 1
+  double worst_drift_ = 0.0;                    ///< the largest energy drift warned about
+  WallCrossings crossings_;                     ///< since the last check_walls()
+  std::vector<RunWarning> warnings_;
   std::int64_t step_ = 0, evaluations_ = 0;
   bool current_ = false;      ///< rates belong to the current state
   bool rates_known_ = false;  ///< signal speeds from some evaluation under the current params (for dt)

@@ -171,6 +171,13 @@ RiemannStar RiemannSolver::star() const { return star_; }
 
 double RiemannSolver::gamma() const { return gamma_; }
 
+WaveSpan RiemannSolver::span() const {
+  const double g = gamma_, ps = star_.p;
+  const double lo = ps > left_.p ? shock_speed(ps, left_, c_left_, g, -1.0) : left_.v - c_left_;
+  const double hi = ps > right_.p ? shock_speed(ps, right_, c_right_, g, 1.0) : right_.v + c_right_;
+  return {lo, hi};
+}
+
 GasState RiemannSolver::sample(double x, double t) const {
   if (!(t >= 0.0)) throw std::invalid_argument("RiemannSolver::sample: t must be >= 0");
   if (t == 0.0) return x < x0_ ? left_ : right_;

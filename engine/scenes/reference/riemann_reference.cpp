@@ -5,11 +5,18 @@
 // with its error |p/p* - 1| and |u - u*| / s, s = |u*|, or the largest sound speed c_max when
 // |u*| < 0.05 c_max (Toro's "123" has u* = 0). There, the star region is a near vacuum a few h wide,
 // so instead the smallest density is compared with the exact one at the particles' positions.
+// The tube ends are mirror walls: a state moving away from (or into) a wall launches a wave from it at
+// t = 0, and the fan itself reaches the walls later. Each wall's wave is the Riemann problem of the
+// state against its mirror image; its front moves at that problem's outermost speed. The norms are
+// taken over [lo + s_lo t, hi + s_hi t], the part of the tube no wall wave has reached, and the
+// comparison applies until a wall wave meets the fan (valid_until()).
 #include "riemann_reference.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace sph::scenes {
@@ -19,10 +26,32 @@ class RiemannReference final : public Reference {
  public:
   RiemannReference(GasState l, GasState r, double gamma, double x0, double lo, double hi)
       : solver_(l, r, gamma, x0), x0_(x0), lo_(lo), hi_(hi),
-        c_max_(std::max(std::sqrt(gamma * l.p / l.rho), std::sqrt(gamma * r.p / r.rho))) {}
+        c_max_(std::max(std::sqrt(gamma * l.p / l.rho), std::sqrt(gamma * r.p / r.rho))) {
+    s_lo_ = l.v == 0.0 ? 0.0 : std::max(0.0, wall_wave({l.rho, -l.v, l.p}, l, gamma, true));
+    s_hi_ = r.v == 0.0 ? 0.0 : std::min(0.0, wall_wave(r, {r.rho, -r.v, r.p}, gamma, false));
+    const WaveSpan fan = solver_.span();
+    const double close_lo = s_lo_ - fan.s_min, close_hi = fan.s_max - s_hi_;  // closing speeds
+    const double inf = std::numeric_limits<double>::infinity();
+    valid_until_ = std::min(close_lo > 0.0 ? (x0 - lo) / close_lo : inf, close_hi > 0.0 ? (hi - x0) / close_hi : inf);
+  }
+
+  /// Speed of the wave a wall launches into the gas: the right edge of mirror | state (left wall) or the
+  /// left edge of state | mirror (right wall). Two fans that would leave a vacuum: the rarefaction head.
+  static double wall_wave(GasState a, GasState b, double gamma, bool left_wall) {
+    try {
+      const WaveSpan w = RiemannSolver(a, b, gamma).span();
+      return left_wall ? w.s_max : w.s_min;
+    } catch (const std::invalid_argument&) {
+      const GasState& gas = left_wall ? b : a;
+      const double c = std::sqrt(gamma * gas.p / gas.rho);
+      return left_wall ? gas.v + c : gas.v - c;
+    }
+  }
+
+  double valid_until() const override { return valid_until_; }
 
   std::vector<RefColumn> columns() const override {
-    return {{"count", "particles compared (x inside the tube)", false},
+    return {{"count", "particles compared (x inside the tube, outside the walls' own waves)", false},
             {"L1_rho", "mean |rho - rho_exact|", true},
             {"L1_v", "mean |v - v_exact|", true},
             {"L1_p", "mean |P - P_exact|", true},
@@ -49,9 +78,10 @@ class RiemannReference final : public Reference {
     };
     auto in_fan = [&](const GasState& s) { return !same(s, L0) && !same(s, R0); };
     const bool hp = p.has(Field::Pressure), hu = p.has(Field::Energy), hr = p.has(Field::Density);
+    const double lo = lo_ + s_lo_ * t, hi = hi_ + s_hi_ * t;  // no wall wave inside
     for (std::size_t i = 0; i < p.fluid(); ++i) {
       const double x = p.x[0][i];
-      if (x < lo_ || x > hi_) continue;
+      if (x < lo || x > hi) continue;
       const GasState s = solver_.sample(x, t);
       const double drho = hr ? std::abs(p[Field::Density][i] - s.rho) : 0.0;
       l1r += drho;
@@ -79,7 +109,7 @@ class RiemannReference final : public Reference {
       std::vector<double> pv, vv;
       for (std::size_t i = 0; i < p.fluid(); ++i) {
         const double x = p.x[0][i], m = 4.0 * p[Field::H][i];
-        if (x < lo_ || x > hi_ || std::abs(x - contact) < m) continue;
+        if (x < lo || x > hi || std::abs(x - contact) < m) continue;
         if (!in_star(x - m) || !in_star(x + m) || !in_star(x)) continue;
         pv.push_back(p[Field::Pressure][i]);
         vv.push_back(p.v[0][i]);
@@ -101,10 +131,21 @@ class RiemannReference final : public Reference {
   }
 
   std::string description() const override {
-    char buf[160];
-    std::snprintf(buf, sizeof buf, "L1 = mean over particles with x in [%g, %g] of |f - f_exact|; exact Riemann solution",
-                  lo_, hi_);
-    return buf;
+    char buf[320];
+    if (s_lo_ == 0.0 && s_hi_ == 0.0)
+      std::snprintf(buf, sizeof buf, "L1 = mean over particles with x in [%g, %g] of |f - f_exact|; exact Riemann solution",
+                    lo_, hi_);
+    else
+      std::snprintf(buf, sizeof buf,
+                    "L1 = mean over particles with x in [%g + %.4g t, %g + %.4g t] (outside the waves the walls launch) "
+                    "of |f - f_exact|; exact Riemann solution",
+                    lo_, s_lo_, hi_, s_hi_);
+    std::string out = buf;
+    if (std::isfinite(valid_until_)) {
+      std::snprintf(buf, sizeof buf, "; it applies until t = %.4g, when a wave reaches a wall", valid_until_);
+      out += buf;
+    }
+    return out;
   }
 
   int primary() const override { return 1; }
@@ -132,6 +173,8 @@ class RiemannReference final : public Reference {
  private:
   RiemannSolver solver_;
   double x0_, lo_, hi_, c_max_;
+  double s_lo_ = 0.0, s_hi_ = 0.0;  ///< speeds of the fronts of the walls' own waves (0: none)
+  double valid_until_ = 0.0;        ///< when a wall's wave (or the wall) meets the fan
 };
 
 }  // namespace

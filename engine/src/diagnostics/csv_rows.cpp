@@ -37,12 +37,14 @@ std::string diagnostics_csv_row(const Diagnostics& d) {
 std::string errors_csv_header(const std::vector<RefColumn>& columns) {
   std::string s = "t";
   for (const auto& c : columns) field(s, c.name);
+  field(s, "valid");
   return s;
 }
 
-std::string errors_csv_row(double t, const std::vector<double>& values) {
+std::string errors_csv_row(double t, const std::vector<double>& values, bool valid) {
   std::string s = fmt(t);
   for (double v : values) field(s, fmt(v));
+  field(s, valid ? "1" : "0");
   return s;
 }
 

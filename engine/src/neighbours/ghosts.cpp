@@ -1,4 +1,5 @@
 // Ghost particles for periodic boundaries (seed 000 §4.1.1) and mirror walls (seed 000 §4.2.1).
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include "core/parallel.h"
@@ -88,8 +89,9 @@ void copy_ghost_fields(Particles& p, FieldSet fields) {
   fields.for_each([&](Field f) { copy_ghost_field(p, f); });
 }
 
-void apply_boundaries(const Domain& d, Particles& p) {
+WallCrossings apply_boundaries(const Domain& d, Particles& p) {
   const std::size_t n = p.size();
+  WallCrossings w;
   for (int k = 0; k < p.dim(); ++k) {
     const double lo = d.lo[k], hi = d.hi[k], L = hi - lo;
     auto& x = p.x[k];
@@ -104,13 +106,23 @@ void apply_boundaries(const Domain& d, Particles& p) {
         }
       }
     } else if (d.bc[k] == Boundary::Wall) {
-#pragma omp parallel for if (n >= kParallelMin)
+      std::size_t reflected = 0, escaped = 0, first_r = SIZE_MAX, first_e = SIZE_MAX;
+#pragma omp parallel for reduction(+ : reflected, escaped) reduction(min : first_r, first_e) if (n >= kParallelMin)
       for (std::size_t i = 0; i < n; ++i) {
-        if (x[i] < lo) { x[i] = 2.0 * lo - x[i]; v[i] = -v[i]; }
-        else if (x[i] > hi) { x[i] = 2.0 * hi - x[i]; v[i] = -v[i]; }
+        if (!(x[i] < lo) && !(x[i] > hi)) continue;
+        x[i] = x[i] < lo ? 2.0 * lo - x[i] : 2.0 * hi - x[i];
+        v[i] = -v[i];
+        ++reflected;
+        first_r = std::min(first_r, i);
+        if (x[i] < lo || x[i] > hi) { ++escaped; first_e = std::min(first_e, i); }
       }
+      w.reflected += reflected;
+      w.escaped += escaped;
+      w.first_reflected = std::min(w.first_reflected, first_r);
+      w.first_escaped = std::min(w.first_escaped, first_e);
     }
   }
+  return w;
 }
 
 }  // namespace sph

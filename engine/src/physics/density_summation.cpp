@@ -149,20 +149,21 @@ class DensitySummation final : public Stage {
     if (overflow > 0) return false;
 
     double sum_it = 0.0, sum_nb = 0.0;  // sums of integers: exact, so the same for any thread count
-    std::size_t not_converged = 0;
+    std::size_t not_converged = 0, first_bad = n;
     int max_it = 0;
     DensityStats& stats = c.stats.density;
     stats = DensityStats{};
     stats.bisections = bisections;
-#pragma omp parallel for reduction(+ : sum_it, sum_nb, not_converged) reduction(max : max_it) if (p.size() >= kParallelMin)
+#pragma omp parallel for reduction(+ : sum_it, sum_nb, not_converged) reduction(max : max_it) reduction(min : first_bad) if (p.size() >= kParallelMin)
     for (std::size_t i = 0; i < n; ++i) {
       int it = static_cast<int>(hiter[i]);
-      if (it >= 1000) { ++not_converged; it -= 1000; hiter[i] = it; }
+      if (it >= 1000) { ++not_converged; it -= 1000; hiter[i] = it; first_bad = std::min(first_bad, i); }
       sum_it += it;
       max_it = std::max(max_it, it);
       sum_nb += nneigh[i];
     }
     stats.not_converged = not_converged;
+    stats.first_not_converged = first_bad < n ? static_cast<std::int64_t>(p.id[first_bad]) : -1;
     stats.max_iterations = max_it;
     stats.mean_iterations = n ? sum_it / n : 0.0;
     stats.mean_neighbours = n ? sum_nb / n : 0.0;

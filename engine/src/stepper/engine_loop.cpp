@@ -275,6 +275,7 @@ void EngineLoop::publish(int record_index) {
     f.ref_series = world_->reference() ? world_->reference()->series() : std::vector<std::pair<int, int>>{};
     f.stages = world_->stage_names();
     f.density = world_->density_stats();
+    f.warnings = world_->warnings();
     f.config = world_->config();
   } else {
     f.snapshot = Snapshot{};
@@ -286,6 +287,7 @@ void EngineLoop::publish(int record_index) {
     f.ref_series.clear();
     f.stages.clear();
     f.density = DensityStats{};
+    f.warnings.clear();
     f.config = cfg_;
   }
   f.params_version = adopted_;

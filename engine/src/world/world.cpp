@@ -53,6 +53,12 @@ DivergedError::DivergedError(std::int64_t particle_, std::int64_t step_, double 
                                               " (t = " + std::to_string(t_) + ")"),
       particle(particle_), step(step_), t(t_), field(field_) {}
 
+DivergedError::DivergedError(std::int64_t particle_, std::int64_t step_, double t_, const std::string& field_,
+                             const std::string& reason)
+    : std::runtime_error("simulation diverged: " + reason + " at step " + std::to_string(step_) +
+                         " (t = " + std::to_string(t_) + ")"),
+      particle(particle_), step(step_), t(t_), field(field_) {}
+
 World::World(const RunConfig& cfg)
     : cfg_(cfg), kernel_(cfg.params.kernel.type, cfg.scene->dim), stats_(std::make_unique<EvalStats>()) {
   check_physics(*cfg_.scene, cfg_.params.physics);
@@ -71,7 +77,7 @@ World::World(const RunConfig& cfg)
     reference_ = cfg_.scene->reference(cfg_.params, cfg_.values);
     if (reference_) ref_columns_ = reference_->columns();
   }
-  apply_boundaries(domain_, p_);
+  bound();
   evaluate();
   if (cfg_.scene->density_anchor && p_.has(Field::Density)) {
     const auto [k, rho_target] = cfg_.scene->density_anchor(cfg_.values);
@@ -89,9 +95,10 @@ World::World(const RunConfig& cfg)
   // the start must be a state the h solve reaches (seed 000 eq. 3.5.1): otherwise nothing runs or is written
   const std::size_t failed = stats_->density.not_converged;
   if (failed > 0 && p_.has(Field::Density) && cfg_.params.physics.smoothing == HMode::Variable)
-    throw DivergedError(-1, 0, 0.0,
+    throw DivergedError(stats_->density.first_not_converged, 0, 0.0, "h",
                         "the smoothing-length solve did not converge for " + std::to_string(failed) + " of " +
-                            std::to_string(p_.fluid()) + " particles at the start (kernel.eta = " +
+                            std::to_string(p_.fluid()) + " particles at the start (the first is particle " +
+                            std::to_string(stats_->density.first_not_converged) + "; kernel.eta = " +
                             std::to_string(eta()) + "): change kernel.eta, or raise h.max_iter");
   current_ = true;
   reorder();
@@ -241,7 +248,7 @@ void World::prepare_neighbours() {
 }
 
 void World::evaluate() {
-  apply_boundaries(domain_, p_);
+  bound();
   const std::size_t n = p_.size();
   StageContext ctx = context();
   if (timings_.size() != pipeline_->stages().size() + 1) reset_timings();
@@ -263,7 +270,8 @@ void World::evaluate() {
       if (!done) { complete = false; break; }
     }
     if (complete) break;
-    if (attempt > 20) throw DivergedError(-1, step_, t_, "the smoothing length does not converge");
+    if (attempt > 20)
+      throw DivergedError(-1, step_, t_, "h", "the smoothing length outgrows its neighbour lists on every rebuild");
   }
   ++evaluations_;
   rates_known_ = true;
@@ -309,47 +317,36 @@ void World::step(double dt_max) {
   if (step_ > 0 && step_ % kReorderEvery == 0) reorder();
   const double dt_free = next_dt();
   double dt = std::min(dt_free, dt_max);
-  if (!(dt > 0.0) || !std::isfinite(dt)) throw DivergedError(-1, step_, t_, "no finite timestep");
+  if (!(dt > 0.0) || !std::isfinite(dt)) {
+    const std::int64_t id = fastest_particle();
+    throw DivergedError(id, step_, t_, "dt", "no finite timestep (particle " + std::to_string(id) + " has the largest acceleration)");
+  }
   // A blow-up that stays finite (velocities of 1e10, E_kin of 1e21) shows as a collapsing adaptive dt:
   // the run would crawl forever. A millionth of the first step's dt is far below any physical change.
   if (cfg_.params.time.dt <= 0.0) {
     if (dt_first_ <= 0.0) dt_first_ = dt_free;
     if (dt_free < 1e-6 * dt_first_) {
-      char what[160];
-      std::snprintf(what, sizeof what, "the timestep collapsed to %.3g (the first step took %.3g): the run is unstable",
-                    dt_free, dt_first_);
-      throw DivergedError(-1, step_, t_, what);
+      const std::int64_t id = fastest_particle();
+      char what[220];
+      std::snprintf(what, sizeof what,
+                    "the timestep collapsed to %.3g (the first step took %.3g; particle %lld has the largest "
+                    "acceleration): the run is unstable",
+                    dt_free, dt_first_, static_cast<long long>(id));
+      throw DivergedError(id, step_, t_, "dt", what);
     }
   }
   PhaseSpace s = phase_space();
   current_ = integrator_->step(s, [this] { evaluate(); }, dt, current_);
-  apply_boundaries(domain_, p_);
+  bound();
   t_ += dt;
   dt_last_ = dt;
   ++step_;
   after_step();
   check_finite();
+  check_walls();
+  check_h_solve();
   check_energy();
-}
-
-void World::check_energy() {
-  // Every stage conserves or dissipates E_kin + E_int + E_pot (the corrected forms to truncation error),
-  // so a total energy that grows by many times its initial scale is a blow-up that has not (yet) reached
-  // inf or NaN. Checked every 16 steps (the potentials cost a pass over the neighbours).
-  if (step_ % 16 != 0 && energy_scale_ >= 0.0) return;
-  const Diagnostics d = diagnostics();
-  if (energy_scale_ < 0.0) {
-    energy_scale_ = std::abs(d.E_kin) + std::abs(d.E_int) + std::abs(d.E_pot);
-    energy0_ = d.E_tot;
-    return;
-  }
-  if (energy_scale_ > 0.0 && d.E_tot - energy0_ > 10.0 * energy_scale_) {
-    char what[200];
-    std::snprintf(what, sizeof what,
-                  "the total energy grew from %.4g to %.4g (E_kin = %.3g, v_max = %.3g): the run is unstable", energy0_,
-                  d.E_tot, d.E_kin, d.v_max);
-    throw DivergedError(-1, step_, t_, what);
-  }
+  check_reference();
 }
 
 void World::after_step() {
@@ -378,21 +375,6 @@ void World::advance_to(double t_target) {
     step(dt);
     if (t_ > t_target) t_ = t_target;
   }
-}
-
-void World::check_finite() const {
-  auto bad = [&](const std::vector<double>& a, std::size_t n, const char* name) {
-    std::size_t first = n;  // lowest index of a non-finite value: the same for any thread count
-#pragma omp parallel for reduction(min : first) if (n >= kParallelMin)
-    for (std::size_t i = 0; i < n; ++i)
-      if (!std::isfinite(a[i])) first = std::min(first, i);
-    if (first < n) throw DivergedError(p_.id[first], step_, t_, name);
-  };
-  const char* xn[3] = {"x", "y", "z"};
-  const char* vn[3] = {"vx", "vy", "vz"};
-  for (int k = 0; k < p_.dim(); ++k) { bad(p_.x[k], p_.fluid(), xn[k]); bad(p_.v[k], p_.fluid(), vn[k]); }
-  for (Field f : {Field::Density, Field::H, Field::Energy, Field::Pressure})
-    if (p_.has(f)) bad(p_[f], p_.size(), std::string(info(f).key).c_str());
 }
 
 }  // namespace sph
