@@ -6,50 +6,17 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
+#include "cli_common.h"
 #include "exit_codes.h"
 #include "sph/convergence.h"
 #include "sph/world.h"
 #ifdef SPH_HAVE_FRAMES
 #include "frame_recorder.h"
-#include "frame_size.h"
 #endif
 
 namespace sph::cli {
 namespace {
-
-std::vector<double> parse_values(const std::string& text) {
-  std::vector<double> out;
-  std::stringstream ss(text);
-  for (std::string item; std::getline(ss, item, ',');) {
-    if (item.empty()) continue;
-    std::size_t used = 0;
-    double v = 0.0;
-    try {
-      v = std::stod(item, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used != item.size() || !std::isfinite(v)) throw ConfigError("--values: '" + item + "' is not a number");
-    out.push_back(v);
-  }
-  return out;
-}
-
-bool write_text(const std::filesystem::path& path, const std::string& text) {
-  const std::filesystem::path tmp = path.string() + ".tmp";
-  {
-    std::ofstream f(tmp, std::ios::binary);
-    f << text;
-    f.flush();
-    if (!f) return false;
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  return !ec;
-}
 
 #ifdef SPH_HAVE_FRAMES
 /// log10 e against log10 h as a 1D profile: the runs as points, the fitted line as the exact curve.
@@ -104,14 +71,10 @@ int converge_command(const ConvergeOptions& opt) {
   ConvergenceStudy study;
   try {
     base = RunConfig::load(opt.scene);
-    for (const auto& kv : opt.sets) {
-      const auto eq = kv.find('=');
-      if (eq == std::string::npos || eq == 0) throw ConfigError("--set " + kv + ": expected key=value");
-      base.set(kv.substr(0, eq), kv.substr(eq + 1), "--set " + kv);
-    }
+    apply_sets(base, opt.sets);
     base.validate();
     study.key = opt.key;
-    study.values = parse_values(opt.values);
+    study.values = parse_number_list(opt.values, "--values");
     study.t = opt.until;
     study.column = opt.column;
     study = resolve_study(base, study);
@@ -119,40 +82,26 @@ int converge_command(const ConvergeOptions& opt) {
     std::fprintf(stderr, "sph: converge: %s\n", e.what());
     return kInvalidScene;
   }
-#ifdef SPH_HAVE_FRAMES
   int width = 0, height = 0;
-  if (!render::parse_frame_size(opt.size, &width, &height)) {
-    std::fprintf(stderr, "sph: --size %s: expected WIDTHxHEIGHT, e.g. 1280x720\n", opt.size.c_str());
-    return kUsage;
-  }
-#endif
+  if (!parse_plot_size(opt.size, &width, &height)) return kUsage;
   const std::filesystem::path dir = opt.out.empty() ? "converge_" + base.scene->name : opt.out;
-  std::error_code ec;
-  const bool existed = std::filesystem::exists(dir, ec);
-  std::filesystem::create_directories(dir, ec);
-  if (ec || !std::filesystem::is_directory(dir)) {
+  bool existed = false;
+  if (!make_output_dir(dir, &existed)) {
     std::fprintf(stderr, "sph: --out %s: cannot create the directory\n", dir.string().c_str());
     return kIoError;
   }
   if (opt.threads > 0) omp_set_num_threads(opt.threads);
   ConvergenceResult r;
-  try {
+  const int rc = guarded_runs("converge", dir, existed, [&] {
     r = run_convergence(base, study, [&](const ConvergenceRun& run) {
       if (!opt.quiet)
         std::fprintf(stderr, "  %s = %g: %s = %.6g (%lld steps, %.2f s)\n", study.key.c_str(), run.value,
                      study.column.c_str(), run.error, static_cast<long long>(run.steps), run.wall_s);
     });
-  } catch (const ConfigError& e) {
-    std::fprintf(stderr, "sph: converge: %s\n", e.what());
-    if (!existed) std::filesystem::remove(dir, ec);  // nothing was written into it
-    return kInvalidScene;
-  } catch (const DivergedError& e) {
-    std::fprintf(stderr, "sph: converge: a run diverged: %s (nothing written)\n", e.what());
-    if (!existed) std::filesystem::remove(dir, ec);
-    return kDiverged;
-  }
+  });
+  if (rc != kOk) return rc;
   const std::string md = convergence_markdown(r);
-  if (!write_text(dir / "converge.csv", convergence_csv(r)) || !write_text(dir / "converge.md", md)) {
+  if (!write_text_atomic(dir / "converge.csv", convergence_csv(r)) || !write_text_atomic(dir / "converge.md", md)) {
     std::fprintf(stderr, "sph: cannot write %s\n", (dir / "converge.csv").string().c_str());
     return kIoError;
   }

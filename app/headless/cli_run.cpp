@@ -8,6 +8,7 @@
 #include <iostream>
 #include <memory>
 
+#include "cli_common.h"
 #include "exit_codes.h"
 #include "run_output.h"
 #include "sph/config.h"
@@ -24,12 +25,7 @@ namespace {
 
 sph::RunConfig resolve(const RunOptions& opt) {
   sph::RunConfig cfg = sph::RunConfig::load(opt.scene);
-  for (const auto& kv : opt.sets) {
-    const auto eq = kv.find('=');
-    if (eq == std::string::npos || eq == 0)
-      throw ConfigError("--set " + kv + ": expected key=value");
-    cfg.set(kv.substr(0, eq), kv.substr(eq + 1), "--set " + kv);
-  }
+  apply_sets(cfg, opt.sets);
   if (opt.until >= 0.0) cfg.params.time.t_end = opt.until;
   cfg.validate();
   return cfg;

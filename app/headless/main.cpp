@@ -1,8 +1,10 @@
-// sph: the headless program. `sph list`, `sph check SCENE`, `sph run SCENE [...]`, `sph converge SCENE [...]`.
+// sph: the headless program. `sph list`, `sph check SCENE`, `sph run SCENE [...]`, `sph converge SCENE [...]`,
+// `sph bench [SCENE...]`.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
 
+#include "cli_bench.h"
 #include "cli_converge.h"
 #include "cli_run.h"
 #include "exit_codes.h"
@@ -56,6 +58,17 @@ int main(int argc, char** argv) {
   converge->add_option("--threads", conv.threads, "OpenMP threads")->check(CLI::Range(1, 1024));
   converge->add_option("--size", conv.size, "plot size WIDTHxHEIGHT (even numbers)");
   converge->add_flag("--quiet", conv.quiet, "no progress or table on the terminal");
+  BenchOptions bench_opt;
+  auto* bench = app.add_subcommand("bench", "work-precision report: error against wall time over resolutions x kernels x integrators");
+  bench->add_option("scenes", bench_opt.scenes, "scenes with a reference (default: sod, shocktube_castellanos, toro3)");
+  bench->add_option("--values", bench_opt.values, "comma-separated values of each scene's study key (default: the scene's)");
+  bench->add_option("--kernels", bench_opt.kernels, "comma-separated kernels (default: M4,M6,wendland_c2; N-body and FPM scenes keep theirs)");
+  bench->add_option("--integrators", bench_opt.integrators, "comma-separated integrators (default: leapfrog,rk4)");
+  bench->add_option("--set", bench_opt.sets, "override a parameter of every run: key=value (repeatable)");
+  bench->add_option("--out", bench_opt.out, "output directory (default bench): bench.csv, bench.md, bench_SCENE.png");
+  bench->add_option("--threads", bench_opt.threads, "OpenMP threads")->check(CLI::Range(1, 1024));
+  bench->add_option("--size", bench_opt.size, "plot size WIDTHxHEIGHT (even numbers)");
+  bench->add_flag("--quiet", bench_opt.quiet, "no progress or table on the terminal");
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -68,6 +81,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("list")) return list_command();
     if (app.got_subcommand("check")) return check_command(opt);
     if (app.got_subcommand("converge")) return converge_command(conv);
+    if (app.got_subcommand("bench")) return bench_command(bench_opt);
     return run_command(opt);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "sph: internal error: %s\n", e.what());

@@ -22,8 +22,9 @@ inline constexpr Rgba kWall{0.64f, 0.64f, 0.64f, 1.f};
 /// Reference outlines (2D), one colour per distinct label in order: near white first (most scenes
 /// have one label), then amber, sky blue, pink; each drawn on kOutlineHalo, which keeps it visible
 /// over any colour of any map.
-inline constexpr Rgba kOutlines[4] = {
-    {0.98f, 0.98f, 0.98f, 1.f}, {1.00f, 0.78f, 0.25f, 1.f}, {0.45f, 0.80f, 1.00f, 1.f}, {1.00f, 0.50f, 0.80f, 1.f}};
+inline constexpr Rgba kOutlines[8] = {
+    {0.98f, 0.98f, 0.98f, 1.f}, {1.00f, 0.78f, 0.25f, 1.f}, {0.45f, 0.80f, 1.00f, 1.f}, {1.00f, 0.50f, 0.80f, 1.f},
+    {0.55f, 0.90f, 0.45f, 1.f}, {1.00f, 0.45f, 0.35f, 1.f}, {0.75f, 0.60f, 1.00f, 1.f}, {0.30f, 0.85f, 0.80f, 1.f}};
 inline constexpr Rgba kOutlineHalo{0.04f, 0.04f, 0.05f, 1.f};  ///< dark rim under the outlines
 
 }  // namespace sph::render::palette

@@ -25,7 +25,9 @@ void compose_plane(FrameBuild& f, const sph::Snapshot& snap, const ViewSettings&
   f.camera = camera_2d(w);
   L.plot_to_clip = f.camera.proj * f.camera.view;
 
-  add_axes(f, box, {w.x0, w.x1, w.y0, w.y1}, {"x", "y", false});
+  add_axes(f, box, {w.x0, w.x1, w.y0, w.y1},
+           {snap.x_label.empty() ? std::string("x") : snap.x_label, snap.y_label.empty() ? std::string("y") : snap.y_label,
+            false});
 
   // Domain outline (snapshot bounds), thin, under the particles.
   float x0 = 0.f, y0 = 0.f, x1 = 0.f, y1 = 0.f;

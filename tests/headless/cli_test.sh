@@ -154,5 +154,19 @@ if "$sph" run --help | grep -q -- "--frames"; then
 fi
 bad converge_until_zero 2 "until" converge sod --until 0
 
+# sph bench: every run in bench.csv (error, wall time), a table, and a plot per scene
+"$sph" bench sod --values 50,100 --kernels M4,wendland_c2 --integrators leapfrog --out "$work/bench" --quiet
+check "bench sod" 0 $?
+ok "bench csv rows" test "$(grep -c '^sod,' "$work/bench/bench.csv")" = 4
+ok "bench csv valid runs" test -z "$(grep '^sod,' "$work/bench/bench.csv" | awk -F, '$10 != 1')"
+ok "bench md" grep -q "| wendland_c2 / leapfrog | 100 |" "$work/bench/bench.md"
+if "$sph" run --help | grep -q -- "--frames"; then
+  ok "bench plot" test "$(png_size "$work/bench/bench_sod.png")" = "1280x720"
+fi
+bad bench_bad_kernel 3 "M9" bench sod --kernels M9 --values 50,100
+bad bench_bad_integrator 3 "verlet" bench sod --integrators verlet --values 50,100
+bad bench_no_reference 3 "reference" bench box_lattice
+bad bench_junk_value 3 "abc" bench sod --values 50,abc
+
 echo "$passes passed, $fails failed"
 [ "$fails" -eq 0 ]

@@ -26,6 +26,9 @@ struct ConvergenceRun {
   double order = 0.0;   ///< against the previous run (NaN for the first)
   double wall_s = 0.0;  ///< wall time of the run [s]
   std::int64_t steps = 0;
+  std::size_t particles = 0;  ///< real particles at the end
+  bool valid = true;          ///< the reference still applied at t (Reference::valid_until)
+  std::size_t warnings = 0;   ///< kinds of warning the run raised (World::warnings)
 };
 
 struct ConvergenceResult {

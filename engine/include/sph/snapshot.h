@@ -62,6 +62,7 @@ struct Snapshot {
   /// A plot that is not a simulation state (a convergence study): its own title line instead of
   /// "scene t = .. step ..", and the profile's x-axis label instead of the coordinate's name.
   std::string title, x_label;
+  std::string y_label;  ///< a 2D plot's vertical axis label instead of "y" (the work-precision plot)
   std::string points_label, curve_label;  ///< the 1D legend's rows (empty: "SPH particles", "exact")
 
   /// The field with this name, or nullptr.

@@ -71,6 +71,9 @@ ConvergenceResult run_convergence(const RunConfig& base, const ConvergenceStudy&
     run.error = w.reference_value(study.column);
     run.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     run.steps = w.steps();
+    run.particles = w.particles().fluid();
+    run.valid = study.t <= w.reference()->valid_until() * (1.0 + 1e-12);
+    run.warnings = w.warnings().size();
     run.order = std::numeric_limits<double>::quiet_NaN();
     if (!r.runs.empty()) {
       const ConvergenceRun& prev = r.runs.back();
