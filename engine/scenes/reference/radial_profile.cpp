@@ -34,6 +34,7 @@ Peak profile_peak(const RadialProfile& prof, std::size_t min_count) {
 
 double shock_front(const RadialProfile& rho, double ahead) {
   const Peak peak = profile_peak(rho, 3);
+  if (!(peak.value > ahead)) return 0.0;
   const double level = 0.5 * (peak.value + ahead);
   std::size_t k = static_cast<std::size_t>(peak.r / rho.dr);
   double r_prev = peak.r, v_prev = peak.value;

@@ -21,7 +21,7 @@ RadialProfile radial_profile(const Particles& p, Field f, double dr, std::size_t
 /// the first place where the shell means fall below half way between that peak and `ahead`, linearly
 /// interpolated between shell centres. A step smoothed by a symmetric kernel crosses its half height at
 /// the step, so this estimator has no lag of order h (the peak itself sits about h behind the front).
-/// Returns 0 if no shell falls below the level.
+/// Returns 0 if no shell falls below the level or nothing is denser than `ahead`.
 double shock_front(const RadialProfile& rho, double ahead);
 
 /// The largest shell mean and its radius (shells with at least `min_count` particles).
