@@ -27,5 +27,8 @@ SceneSpec polytrope_scene();
 SceneSpec colliding_polytropes_scene();
 SceneSpec burgers_viscous_scene();
 SceneSpec burgers_upwind_scene();
+SceneSpec sedov_scene();
+SceneSpec sedov3d_scene();
+SceneSpec noh_scene();
 
 }  // namespace sph::scenes
