@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "panels.h"
+#include "param_help.h"
 
 namespace sph::gui {
 
@@ -69,9 +70,7 @@ void panel_scene(GuiState& s) {
       it->second = std::min(sp.max, std::max(sp.min, v));
     }
     if (pending) ImGui::PopStyleColor();
-    if (ImGui::IsItemHovered())
-      ImGui::SetTooltip("scene.%s: %s\nrange [%g, %g]%s\nneeds reset: the particles are placed again (Enter, then Reset)",
-                        sp.name.c_str(), sp.description.c_str(), sp.min, sp.max, sp.integer ? ", integer" : "");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", scene_value_help(sp).c_str());
   }
   ImGui::TreePop();
 }
