@@ -8,6 +8,7 @@
 
 #include "panels.h"
 #include "param_help.h"
+#include "scene_text.h"
 
 namespace sph::gui {
 
@@ -28,7 +29,7 @@ void panel_scene(GuiState& s) {
   }
   if (current) {
     ImGui::PushTextWrapPos(0.f);
-    ImGui::TextDisabled("%s: %s", current->category.c_str(), current->description.c_str());
+    ImGui::TextDisabled("%s: %s", current->category.c_str(), describe_scene(*current, f->config.values).c_str());
     ImGui::PopTextWrapPos();
   }
   const std::string hint = "assets/scenes/" + s.scene_name() + ".json";  // the running scene's own file
