@@ -30,7 +30,8 @@ void curve_plot(const char* id, const char* x_label, float x0, float x1, const s
   lo -= pad;
   hi += pad;
   // Value labels: enough digits to tell the ends apart (a sparkline's E_tot differs in the 6th digit).
-  const int digits = include_zero ? 3 : 7;
+  const float big = std::max(std::abs(lo), std::abs(hi));
+  const int digits = std::clamp(static_cast<int>(std::ceil(std::log10(std::max(1.f, big / (hi - lo))))) + 2, 3, 7);
   auto text_of = [&](float v) {
     char t[32];
     std::snprintf(t, sizeof t, "%.*g", digits, v);
@@ -57,7 +58,7 @@ void curve_plot(const char* id, const char* x_label, float x0, float x1, const s
   if (!include_zero) dl->AddText(ImVec2(p0.x, 0.5f * (a.y + b.y) - 0.5f * fh), axis, middle.c_str());
   for (int k = 0; k <= 6; k += 2) {
     const float x = x0 + (x1 - x0) * k / 6.f;
-    std::snprintf(buf, sizeof buf, "%g", x);
+    std::snprintf(buf, sizeof buf, "%.3g", x);
     const float tw = ImGui::CalcTextSize(buf).x;
     dl->AddText(ImVec2(std::clamp(X(x) - 0.5f * tw, a.x, b.x - tw), b.y + 2.f), axis, buf);
   }

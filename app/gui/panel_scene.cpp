@@ -32,7 +32,7 @@ void panel_scene(GuiState& s) {
     ImGui::TextDisabled("%s: %s", current->category.c_str(), describe_scene(*current, f->config.values).c_str());
     ImGui::PopTextWrapPos();
   }
-  const std::string hint = "assets/scenes/" + s.scene_name() + ".json";  // the running scene's own file
+  const std::string hint = scene_file_hint(s.scene_name());
   ImGui::InputTextWithHint("##file", hint.c_str(), &s.file_path);
   ImGui::SameLine();
   if (ImGui::Button("Open file") && !s.file_path.empty()) {

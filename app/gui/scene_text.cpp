@@ -49,4 +49,6 @@ std::string describe_scene(const SceneSpec& spec, const SceneValues& values) {
   return rest.empty() ? text : text + " (here " + rest + ")";
 }
 
+std::string scene_file_hint(const std::string& scene) { return "assets/scenes/" + scene + ".json"; }
+
 }  // namespace sph::gui

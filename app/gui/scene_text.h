@@ -11,4 +11,8 @@ namespace sph::gui {
 /// spec.description for `values` (spec.description itself when they are the defaults).
 std::string describe_scene(const SceneSpec& spec, const SceneValues& values);
 
+/// The hint of the scene-file field: the running scene's own file (it said assets/scenes/sod.json for
+/// every scene).
+std::string scene_file_hint(const std::string& scene);
+
 }  // namespace sph::gui

@@ -2,6 +2,8 @@
 // particles" with scene.count = 20000.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include "scene_text.h"
 
 namespace sph::gui {
@@ -40,6 +42,14 @@ TEST(SceneText, ValuesNotInTheTextAreListed) {
   // 0.125 is in the text as rho_r's default: replaced, not listed
   EXPECT_NE(d.find("1,1 | 0.25,0.1"), std::string::npos) << d;
   EXPECT_EQ(d.find("rho_r ="), std::string::npos) << d;
+}
+
+TEST(SceneText, FileHintIsTheRunningScenesOwnFile) {
+  for (const SceneSpec& s : scene_registry()) {
+    const std::string hint = scene_file_hint(s.name);
+    EXPECT_EQ(hint, "assets/scenes/" + s.name + ".json");
+    EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(SPH_SOURCE_DIR) / hint)) << hint;
+  }
 }
 
 }  // namespace
