@@ -81,7 +81,7 @@ void curve_plot(const char* id, const char* x_label, float x0, float x1, const s
   float ly = a.y + 4.f;
   for (const Curve& c : curves) {
     const float w = ImGui::CalcTextSize(c.label.c_str()).x;
-    const float lx = b.x - w - 30.f;
+    const float lx = std::max(a.x + 4.f, b.x - w - 30.f);  // a long title stays inside the box
     dl->AddLine(ImVec2(lx, ly + 0.5f * fh), ImVec2(lx + 20.f, ly + 0.5f * fh), c.color, 2.f);
     dl->AddText(ImVec2(lx + 24.f, ly), IM_COL32(225, 225, 230, 255), c.label.c_str());
     ly += fh + 2.f;
