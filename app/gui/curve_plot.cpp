@@ -3,48 +3,62 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 namespace sph::gui {
 
 void curve_plot(const char* id, const char* x_label, float x0, float x1, const std::vector<Curve>& curves,
-                ImVec2 size) {
+                ImVec2 size, bool include_zero) {
   if (size.x <= 0.f) size.x = ImGui::GetContentRegionAvail().x;
   const ImVec2 p0 = ImGui::GetCursorScreenPos();
   ImGui::InvisibleButton(id, size);
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const float fh = ImGui::GetFontSize();
   const ImU32 axis = IM_COL32(150, 150, 160, 255), grid = IM_COL32(70, 70, 78, 255);
-  // Value range over all curves (always including 0).
-  float lo = 0.f, hi = 0.f;
+  // Value range over all curves (with 0 unless left out).
+  float lo = include_zero ? 0.f : INFINITY, hi = include_zero ? 0.f : -INFINITY;
   for (const Curve& c : curves)
     for (float v : c.y)
       if (std::isfinite(v)) { lo = std::min(lo, v); hi = std::max(hi, v); }
-  if (hi - lo < 1e-12f) hi = lo + 1.f;
+  if (lo > hi) lo = hi = 0.f;  // no finite value
+  if (hi - lo < 1e-6f * std::max(std::abs(lo), std::abs(hi)) || hi - lo < 1e-30f) {
+    const float d = std::max(std::abs(lo) * 1e-3f, 1e-6f);  // constant: centred
+    lo -= d;
+    hi += d;
+  }
   const float pad = 0.06f * (hi - lo);
   lo -= pad;
   hi += pad;
+  // Value labels: enough digits to tell the ends apart (a sparkline's E_tot differs in the 6th digit).
+  const float big = std::max(std::abs(lo), std::abs(hi));
+  const int digits = std::clamp(static_cast<int>(std::ceil(std::log10(std::max(1.f, big / (hi - lo))))) + 2, 3, 7);
+  auto text_of = [&](float v) {
+    char t[32];
+    std::snprintf(t, sizeof t, "%.*g", digits, v);
+    return std::string(t);
+  };
+  const std::string top = text_of(hi - pad), bottom = text_of(lo + pad), middle = text_of(0.5f * (lo + hi));
+  const float label_w = std::max({ImGui::CalcTextSize(top.c_str()).x, ImGui::CalcTextSize(bottom.c_str()).x,
+                                  ImGui::CalcTextSize(middle.c_str()).x, 2.7f * fh});
   // Plot box, leaving room for the value labels and the x label.
-  const ImVec2 a(p0.x + 4.5f * fh * 0.6f + 6.f, p0.y + 4.f), b(p0.x + size.x - 4.f, p0.y + size.y - 1.4f * fh);
+  const ImVec2 a(p0.x + label_w + 6.f, p0.y + 4.f), b(p0.x + size.x - 4.f, p0.y + size.y - 1.4f * fh);
   dl->AddRectFilled(a, b, IM_COL32(36, 36, 42, 255));
   auto X = [&](float x) { return a.x + (x - x0) / (x1 - x0) * (b.x - a.x); };
   auto Y = [&](float y) { return b.y - (y - lo) / (hi - lo) * (b.y - a.y); };
-  dl->AddLine(ImVec2(a.x, Y(0.f)), ImVec2(b.x, Y(0.f)), grid);
+  if (lo < 0.f && hi > 0.f) dl->AddLine(ImVec2(a.x, Y(0.f)), ImVec2(b.x, Y(0.f)), grid);
   for (int k = 1; k < 6; ++k) {
     const float x = x0 + (x1 - x0) * k / 6.f;
     dl->AddLine(ImVec2(X(x), a.y), ImVec2(X(x), b.y), grid);
   }
   dl->AddRect(a, b, axis);
   char buf[32];
-  auto label = [&](float v, ImVec2 at) {
-    std::snprintf(buf, sizeof buf, "%.3g", v);
-    dl->AddText(at, axis, buf);
-  };
-  label(hi - pad, ImVec2(p0.x, a.y));
-  label(lo + pad, ImVec2(p0.x, b.y - fh));
-  if (lo < -pad && hi > pad) label(0.f, ImVec2(p0.x, Y(0.f) - 0.5f * fh));
+  dl->AddText(ImVec2(p0.x, a.y), axis, top.c_str());
+  dl->AddText(ImVec2(p0.x, b.y - fh), axis, bottom.c_str());
+  if (include_zero && lo < -pad && hi > pad) dl->AddText(ImVec2(p0.x, Y(0.f) - 0.5f * fh), axis, "0");
+  if (!include_zero) dl->AddText(ImVec2(p0.x, 0.5f * (a.y + b.y) - 0.5f * fh), axis, middle.c_str());
   for (int k = 0; k <= 6; k += 2) {
     const float x = x0 + (x1 - x0) * k / 6.f;
-    std::snprintf(buf, sizeof buf, "%g", x);
+    std::snprintf(buf, sizeof buf, "%.3g", x);
     const float tw = ImGui::CalcTextSize(buf).x;
     dl->AddText(ImVec2(std::clamp(X(x) - 0.5f * tw, a.x, b.x - tw), b.y + 2.f), axis, buf);
   }
@@ -57,6 +71,7 @@ void curve_plot(const char* id, const char* x_label, float x0, float x1, const s
     const int n = static_cast<int>(c.y.size());
     for (int i = 0; i + 1 < n; ++i) {
       if (c.dashed && (i / 3) % 2 == 1) continue;
+      if (!std::isfinite(c.y[i]) || !std::isfinite(c.y[i + 1])) continue;
       const float xa = x0 + (x1 - x0) * i / (n - 1), xb = x0 + (x1 - x0) * (i + 1) / (n - 1);
       dl->AddLine(ImVec2(X(xa), Y(c.y[i])), ImVec2(X(xb), Y(c.y[i + 1])), c.color, 2.f);
     }
@@ -66,7 +81,7 @@ void curve_plot(const char* id, const char* x_label, float x0, float x1, const s
   float ly = a.y + 4.f;
   for (const Curve& c : curves) {
     const float w = ImGui::CalcTextSize(c.label.c_str()).x;
-    const float lx = b.x - w - 30.f;
+    const float lx = std::max(a.x + 4.f, b.x - w - 30.f);  // a long title stays inside the box
     dl->AddLine(ImVec2(lx, ly + 0.5f * fh), ImVec2(lx + 20.f, ly + 0.5f * fh), c.color, 2.f);
     dl->AddText(ImVec2(lx + 24.f, ly), IM_COL32(225, 225, 230, 255), c.label.c_str());
     ly += fh + 2.f;

@@ -15,8 +15,10 @@ struct Curve {
   bool dashed = false;
 };
 
-/// Draws the curves in a box of `size` (negative width: fill the available width).
+/// Draws the curves in a box of `size` (negative width: fill the available width). The value range
+/// includes 0 unless `include_zero` is false (a sparkline magnifying a nearly constant E_tot).
+/// Non-finite values leave gaps.
 void curve_plot(const char* id, const char* x_label, float x0, float x1, const std::vector<Curve>& curves,
-                ImVec2 size);
+                ImVec2 size, bool include_zero = true);
 
 }  // namespace sph::gui

@@ -6,7 +6,10 @@ namespace sph::gui {
 
 GuiState::GuiState(Stepper& stepper, const RunConfig& initial)
     : edit(initial.params), values(initial.values), stepper_(stepper),
-      scene_name_(initial.scene ? initial.scene->name : std::string()) {}
+      scene_name_(initial.scene ? initial.scene->name : std::string()) {
+  view.percentile_lo = 1.f;  // an outlier no longer squeezes every other particle into one colour
+  view.percentile_hi = 99.f;
+}
 
 void GuiState::update() {
   const StepperFrame* f = stepper_.latest();

@@ -1,6 +1,6 @@
 // Diagnostics: the conserved quantities (seed 000 eqs. 3.4.1-3.4.5) and, where the scene has an exact
-// solution, the running L1 error, as numbers and as curves against simulated time (ImGui::PlotLines
-// on the stepper's history resampled evenly in t).
+// solution, the running L1 error, as numbers and as curves against simulated time (curve_plot, with
+// axes, on the stepper's history resampled evenly in t).
 #include <imgui.h>
 
 #include <algorithm>
@@ -8,29 +8,22 @@
 #include <cstdio>
 
 #include "curve_plot.h"
+#include "diag_text.h"
 #include "history_plot.h"
 #include "panels.h"
 
 namespace sph::gui {
 namespace {
 
-void row(const char* name, const char* fmt, double v, const char* tip) {
-  ImGui::TableNextRow();
-  ImGui::TableNextColumn();
-  ImGui::TextUnformatted(name);
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tip);
-  ImGui::TableNextColumn();
-  ImGui::Text(fmt, v);
+void add(std::vector<DiagRow>& rows, const char* name, double v, int digits, const char* tip) {
+  rows.push_back({name, value_text(v, digits), tip});
 }
 
-void plot(const std::vector<HistorySample>& h, double HistorySample::*field, const char* name, float height) {
-  const std::vector<float> y = resample(h, field, 240);
-  char overlay[96];
-  std::snprintf(overlay, sizeof overlay, "%s = %.6g", name, y.empty() ? 0.0 : static_cast<double>(y.back()));
-  ImGui::PushID(name);
-  ImGui::PlotLines("##plot", y.data(), static_cast<int>(y.size()), 0, overlay, FLT_MAX, FLT_MAX,
-                   ImVec2(ImGui::GetContentRegionAvail().x, height));
-  ImGui::PopID();
+/// One quantity against t, with axes, titled with the value of the frame on screen.
+void sparkline(const char* id, const std::vector<HistorySample>& h, std::vector<float> y, const std::string& title,
+               float height) {
+  const float t0 = h.empty() ? 0.f : static_cast<float>(h.front().t), t1 = h.empty() ? 1.f : static_cast<float>(h.back().t);
+  curve_plot(id, "t", t0, t1, {{title, IM_COL32(200, 200, 210, 255), std::move(y), false}}, ImVec2(-1.f, height), false);
 }
 
 }  // namespace
@@ -44,25 +37,39 @@ void panel_diagnostics(GuiState& s) {
   const double dE = E0 != 0.0 ? (d.E_tot - E0) / std::abs(E0) : d.E_tot - E0;
   const double P = std::sqrt(d.P[0] * d.P[0] + d.P[1] * d.P[1] + d.P[2] * d.P[2]);
   const double L = std::sqrt(d.L[0] * d.L[0] + d.L[1] * d.L[1] + d.L[2] * d.L[2]);
+  std::vector<DiagRow> rows;
+  add(rows, "E_kin", d.E_kin, 6, "kinetic energy, sum 1/2 m v^2 (seed 000 eq. 3.4.4)");
+  add(rows, "E_int", d.E_int, 6, "internal energy of the EOS: sum m u (gas), sum m e(rho) (Tait liquid)");
+  add(rows, "E_pot", d.E_pot, 6, "potential energy of the body force, the Lennard-Jones walls and self-gravity (1/2 sum m phi)");
+  add(rows, "E_tot", d.E_tot, 6, "total energy (seed 000 eq. 3.4.5): conserved without boundaries that do work");
+  add(rows, "dE/E0", dE, 3, "relative change of E_tot since t = 0");
+  add(rows, "|P|", P, 4, "linear momentum, |sum m v| (seed 000 eq. 3.4.1); walls exchange momentum");
+  add(rows, "|L|", L, 4, "angular momentum about the origin, |sum r x m v| (seed 000 eq. 3.4.3)");
+  add(rows, "v_max", d.v_max, 4, "largest particle speed");
+  if (d.correction_fallbacks > 0)
+    add(rows, "fallbacks", static_cast<double>(d.correction_fallbacks), 9,
+        "particles whose gradient correction was ill-conditioned and fell back to L = I");
+  for (std::size_t k = 0; k < f->ref_columns.size() && k < f->ref_values.size(); ++k)
+    rows.push_back({f->ref_columns[k].name, value_text(f->ref_values[k], 5), f->ref_columns[k].description});
+  // Columns as wide as their widest text, so that no value runs into the plots.
+  const DiagWidths w = diag_widths(rows, [](const std::string& t) { return ImGui::CalcTextSize(t.c_str()).x; });
+  const float pad = ImGui::GetStyle().CellPadding.x;
   if (!ImGui::BeginTable("diag", 2, ImGuiTableFlags_SizingStretchProp)) return;
-  ImGui::TableSetupColumn("values", ImGuiTableColumnFlags_WidthFixed, ImGui::GetFontSize() * 11.f);
+  ImGui::TableSetupColumn("values", ImGuiTableColumnFlags_WidthFixed, w.name + w.value + 6.f * pad);
   ImGui::TableSetupColumn("plots", ImGuiTableColumnFlags_WidthStretch);
   ImGui::TableNextRow();
   ImGui::TableNextColumn();
-  if (ImGui::BeginTable("numbers", 2)) {
-    row("E_kin", "%.6g", d.E_kin, "kinetic energy, sum 1/2 m v^2 (seed 000 eq. 3.4.4)");
-    row("E_int", "%.6g", d.E_int, "internal energy of the EOS: sum m u (gas), sum m e(rho) (Tait liquid)");
-    row("E_pot", "%.6g", d.E_pot, "potential energy of the body force, the Lennard-Jones walls and self-gravity (1/2 sum m phi)");
-    row("E_tot", "%.6g", d.E_tot, "total energy (seed 000 eq. 3.4.5): conserved without boundaries that do work");
-    row("dE/E0", "%+.2e", dE, "relative change of E_tot since t = 0");
-    row("|P|", "%.3e", P, "linear momentum, |sum m v| (seed 000 eq. 3.4.1); walls exchange momentum");
-    row("|L|", "%.3e", L, "angular momentum about the origin, |sum r x m v| (seed 000 eq. 3.4.3)");
-    row("v_max", "%.4g", d.v_max, "largest particle speed");
-    if (d.correction_fallbacks > 0)
-      row("fallbacks", "%.0f", static_cast<double>(d.correction_fallbacks),
-          "particles whose gradient correction was ill-conditioned and fell back to L = I");
-    for (std::size_t k = 0; k < f->ref_columns.size() && k < f->ref_values.size(); ++k)
-      row(f->ref_columns[k].name.c_str(), "%.5g", f->ref_values[k], f->ref_columns[k].description.c_str());
+  if (ImGui::BeginTable("numbers", 2, ImGuiTableFlags_SizingFixedFit)) {
+    ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthFixed, w.name);
+    ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthFixed, w.value);
+    for (const DiagRow& r : rows) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(r.name.c_str());
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", r.tip.c_str());
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(r.value.c_str());
+    }
     ImGui::EndTable();
   }
   ImGui::TableNextColumn();
@@ -85,12 +92,8 @@ void panel_diagnostics(GuiState& s) {
   }
   if (err_plot) {
     const std::size_t k = static_cast<std::size_t>(f->ref_primary);
-    const std::vector<float> y = resample_ref(h, k, 240);
-    char overlay[96];
-    std::snprintf(overlay, sizeof overlay, "%s = %.6g", f->ref_columns[k].name.c_str(),
-                  y.empty() ? 0.0 : static_cast<double>(y.back()));
-    ImGui::PlotLines("##err", y.data(), static_cast<int>(y.size()), 0, overlay, FLT_MAX, FLT_MAX,
-                     ImVec2(ImGui::GetContentRegionAvail().x, ph));
+    const double now = k < f->ref_values.size() ? f->ref_values[k] : std::nan("");
+    sparkline("err", h, resample_ref(h, k, 240), plot_title(f->ref_columns[k].name, now, *f), ph);
   }
   {  // the energies on one set of axes, as seed 003's figures show them (the sparkline below magnifies E_tot)
     const float t0 = h.empty() ? 0.f : static_cast<float>(h.front().t), t1 = h.empty() ? 1.f : static_cast<float>(h.back().t);
@@ -100,8 +103,8 @@ void panel_diagnostics(GuiState& s) {
                               {"E_tot", IM_COL32(230, 230, 230, 255), resample(h, &HistorySample::E_tot, 240), true}};
     curve_plot("energies", "t", t0, t1, curves, ImVec2(-1.f, ph));
   }
-  plot(h, &HistorySample::E_tot, "E_tot", ph);
-  plot(h, &HistorySample::P, "|P|", ph);
+  sparkline("E_tot", h, resample(h, &HistorySample::E_tot, 240), plot_title("E_tot", d.E_tot, *f), ph);
+  sparkline("|P|", h, resample(h, &HistorySample::P, 240), plot_title("|P|", P, *f), ph);
   if (!h.empty()) ImGui::TextDisabled("against t = %.4g ... %.4g  (%zu samples)", h.front().t, h.back().t, h.size());
   ImGui::EndTable();
 }

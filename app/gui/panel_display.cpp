@@ -90,7 +90,24 @@ void panel_display(GuiState& s) {
     v.range_min = shown->min;  // start the fixed range from what is shown now
     v.range_max = shown->max;
   }
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("On: every frame uses the field's min..max. Off: a fixed range.");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("On: every frame uses the percentiles below of the fluid's values (0..100: min..max;\n"
+                      "1..99 keeps one outlier from turning every other particle one colour). Off: a fixed range.");
+  if (v.auto_range) {
+    float pct[2] = {v.percentile_lo, v.percentile_hi};
+    if (ImGui::InputFloat2("percentiles", pct, "%.3g", ImGuiInputTextFlags_EnterReturnsTrue) && pct[0] >= 0.f &&
+        pct[1] <= 100.f && pct[0] < pct[1]) {
+      v.percentile_lo = pct[0];
+      v.percentile_hi = pct[1];
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("low and high percentile of the automatic range [%%]");
+    ImGui::SameLine();
+    if (ImGui::SmallButton(v.percentile_lo > 0.f || v.percentile_hi < 100.f ? "min..max" : "1..99")) {
+      const bool to_full = v.percentile_lo > 0.f || v.percentile_hi < 100.f;
+      v.percentile_lo = to_full ? 0.f : 1.f;
+      v.percentile_hi = to_full ? 100.f : 99.f;
+    }
+  }
   if (render::Trails::applies(snap)) {
     ImGui::Checkbox("orbit trails", &v.show_trails);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Each body's path so far (restarts on reset)");

@@ -7,6 +7,8 @@
 #include <cmath>
 
 #include "panels.h"
+#include "param_help.h"
+#include "scene_text.h"
 
 namespace sph::gui {
 
@@ -27,10 +29,10 @@ void panel_scene(GuiState& s) {
   }
   if (current) {
     ImGui::PushTextWrapPos(0.f);
-    ImGui::TextDisabled("%s: %s", current->category.c_str(), current->description.c_str());
+    ImGui::TextDisabled("%s: %s", current->category.c_str(), describe_scene(*current, f->config.values).c_str());
     ImGui::PopTextWrapPos();
   }
-  const std::string hint = "assets/scenes/" + s.scene_name() + ".json";  // the running scene's own file
+  const std::string hint = scene_file_hint(s.scene_name());
   ImGui::InputTextWithHint("##file", hint.c_str(), &s.file_path);
   ImGui::SameLine();
   if (ImGui::Button("Open file") && !s.file_path.empty()) {
@@ -69,9 +71,7 @@ void panel_scene(GuiState& s) {
       it->second = std::min(sp.max, std::max(sp.min, v));
     }
     if (pending) ImGui::PopStyleColor();
-    if (ImGui::IsItemHovered())
-      ImGui::SetTooltip("scene.%s: %s\nrange [%g, %g]%s\nneeds reset: the particles are placed again (Enter, then Reset)",
-                        sp.name.c_str(), sp.description.c_str(), sp.min, sp.max, sp.integer ? ", integer" : "");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", scene_value_help(sp).c_str());
   }
   ImGui::TreePop();
 }

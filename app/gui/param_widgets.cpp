@@ -1,6 +1,7 @@
 #include "param_widgets.h"
 
 #include "log_scale.h"
+#include "param_help.h"
 
 #include <imgui.h>
 
@@ -36,9 +37,7 @@ void param_tooltip(const ParamInfo& info) {
   ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.f);
   ImGui::Text("%.*s", static_cast<int>(info.key.size()), info.key.data());
   ImGui::TextWrapped("%.*s", static_cast<int>(info.description.size()), info.description.data());
-  if (info.choices.empty())
-    ImGui::TextDisabled("unit: %.*s    range: [%g, %g]", static_cast<int>(info.unit.size()), info.unit.data(), info.min,
-                        info.max);
+  if (info.choices.empty()) ImGui::TextDisabled("%s", param_unit_line(info).c_str());
   if (!info.stage.empty())
     ImGui::TextDisabled("used by %.*s", static_cast<int>(info.stage.size()), info.stage.data());
   if (info.live)

@@ -45,11 +45,19 @@ std::unique_ptr<FrameRecorder> make_recorder(const RunOptions& opt) {
   fo.height = h;
   fo.color_by = opt.color_by;
   fo.cmap = opt.cmap;
-  if (opt.range != "auto") {
+  if (!opt.range.empty() && opt.range[0] == 'p') {  // pLO:HI, automatic between percentiles (the GUI's p1:99)
+    float lo = 0, hi = 0;
+    char c = 0, end = 0;
+    if (std::sscanf(opt.range.c_str() + 1, "%f%c%f%c", &lo, &c, &hi, &end) != 3 || c != ':' || !(lo >= 0.f) ||
+        !(hi <= 100.f) || !(hi > lo))
+      throw ConfigError("--range " + opt.range + ": expected pLO:HI with 0 <= LO < HI <= 100");
+    fo.percentile_lo = lo;
+    fo.percentile_hi = hi;
+  } else if (opt.range != "auto") {
     float lo = 0, hi = 0;
     char c = 0;
     if (std::sscanf(opt.range.c_str(), "%f%c%f", &lo, &c, &hi) != 3 || c != ':' || !(hi > lo))
-      throw ConfigError("--range " + opt.range + ": expected auto or MIN:MAX with MIN < MAX");
+      throw ConfigError("--range " + opt.range + ": expected auto, pLO:HI (percentiles) or MIN:MAX with MIN < MAX");
     fo.auto_range = false;
     fo.range_min = lo;
     fo.range_max = hi;

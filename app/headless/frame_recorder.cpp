@@ -201,6 +201,8 @@ FrameRecorder::FrameRecorder(const FrameOptions& options, std::unique_ptr<Offscr
   view_.auto_range = options.auto_range;
   view_.range_min = options.range_min;
   view_.range_max = options.range_max;
+  view_.percentile_lo = options.percentile_lo;
+  view_.percentile_hi = options.percentile_hi;
   view_.log_scale = options.log_scale;
   view_.profile_axis = render::parse_profile_axis(options.profile_axis).value_or(-1);
 }

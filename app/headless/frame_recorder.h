@@ -38,6 +38,7 @@ struct FrameOptions {
   std::string cmap = "viridis";
   bool auto_range = true;     ///< per-frame min/max of the field; else [range_min, range_max]
   float range_min = 0, range_max = 1;
+  float percentile_lo = 0, percentile_hi = 100;  ///< auto range between these percentiles (--range pLO:HI)
   bool log_scale = false;     ///< colour by log10 of the field (--log)
   std::string profile_axis = "off";  ///< 2D: "x" or "y" (profile of the field against it), or "off"
   std::string video;          ///< mp4 path to make from the frames, or empty

@@ -36,7 +36,7 @@ int main(int argc, char** argv) {
   run->add_option("--size", opt.size, "frame size WIDTHxHEIGHT (even numbers)");
   run->add_option("--color-by", opt.color_by, "field to colour by (rho, p, u, speed, h, vx, ...; default rho, or the scene's first field)");
   run->add_option("--cmap", opt.cmap, "colour map: viridis, magma, cividis, coolwarm");
-  run->add_option("--range", opt.range, "colour range: auto or MIN:MAX (in log10 units with --log)");
+  run->add_option("--range", opt.range, "colour range: auto (min..max), pLO:HI (between percentiles, e.g. p1:99 as the GUI) or MIN:MAX (in log10 units with --log)");
   run->add_flag("--log", opt.log_scale, "colour by log10 of the field (values <= 0 are not drawn)");
   run->add_option("--profile-axis", opt.profile_axis,
                   "2D scenes: plot the field against x or y (with its reference curve) instead of the plane; off");

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "colormap_tables.h"
+#include "palette.h"
 
 namespace sph::render {
 
@@ -14,10 +15,31 @@ constexpr Colormap kMaps[] = {Colormap::Viridis, Colormap::Magma, Colormap::Civi
 
 float clamp01(float t) { return std::isnan(t) ? 0.f : std::clamp(t, 0.f, 1.f); }
 
+float srgb_to_linear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
+
+float relative_luminance(Rgb c) {
+  return 0.2126f * srgb_to_linear(c.r) + 0.7152f * srgb_to_linear(c.g) + 0.0722f * srgb_to_linear(c.b);
+}
+
+bool stands_out(Rgb c) {
+  for (const Rgba& bg : {palette::kPlotFill, palette::kBackground})
+    if (contrast_ratio(c, {bg.r, bg.g, bg.b}) < kMinBackgroundContrast + 0.02f) return false;  // margin: 8-bit table
+  return true;
+}
+
+// Scans down from the top in steps of 1/1024 of the published map; stops below the first colour that fails.
+float find_low_end(Colormap map) {
+  constexpr int kSteps = 1024;
+  int k = kSteps;
+  while (k > 0 && stands_out(colormap_exact(map, static_cast<float>(k - 1) / kSteps))) --k;
+  return static_cast<float>(k) / kSteps;
+}
+
 ColormapLut build_lut(Colormap map) {
   ColormapLut lut{};
+  const float t0 = colormap_low_end(map);
   for (int i = 0; i < kColormapLutSize; ++i) {
-    const Rgb c = colormap_exact(map, static_cast<float>(i) / (kColormapLutSize - 1));
+    const Rgb c = colormap_exact(map, t0 + (1.f - t0) * static_cast<float>(i) / (kColormapLutSize - 1));
     const float ch[3] = {c.r, c.g, c.b};
     for (int k = 0; k < 3; ++k)
       lut[4 * i + k] = static_cast<std::uint8_t>(std::lround(std::clamp(ch[k], 0.f, 1.f) * 255.f));
@@ -55,6 +77,17 @@ Rgb colormap_exact(Colormap map, float t) {
   const ControlPoint& b = pts[j];
   const float w = std::clamp((pos - a.position) / (b.position - a.position), 0.f, 1.f);
   return {a.r + w * (b.r - a.r), a.g + w * (b.g - a.g), a.b + w * (b.b - a.b)};
+}
+
+float contrast_ratio(Rgb a, Rgb b) {
+  const float la = relative_luminance(a), lb = relative_luminance(b);
+  return (std::max(la, lb) + 0.05f) / (std::min(la, lb) + 0.05f);
+}
+
+float colormap_low_end(Colormap map) {
+  static const float kLow[] = {find_low_end(Colormap::Viridis), find_low_end(Colormap::Magma),
+                               find_low_end(Colormap::Cividis), find_low_end(Colormap::Coolwarm)};
+  return kLow[static_cast<int>(map)];
 }
 
 const ColormapLut& colormap_lut(Colormap map) {

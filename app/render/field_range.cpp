@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "sph/snapshot.h"
 
@@ -17,8 +18,29 @@ ValueRange widen_degenerate(float lo, float hi) {
   return {mid - d, mid + d};
 }
 
+ValueRange percentile_range(std::span<const float> values, float lo, float hi, std::span<const std::uint8_t> kind) {
+  std::vector<float> v;
+  v.reserve(values.size());
+  for (std::size_t i = 0; i < values.size(); ++i)
+    if (std::isfinite(values[i]) && !(i < kind.size() && kind[i] != 0)) v.push_back(values[i]);
+  if (v.empty()) return {0.f, 0.f};
+  const auto rank = [&](float pct) {  // nearest rank: index round(p/100 (n-1))
+    const double q = std::clamp(static_cast<double>(pct), 0.0, 100.0) / 100.0;
+    return static_cast<std::size_t>(std::lround(q * static_cast<double>(v.size() - 1)));
+  };
+  const std::size_t a = rank(std::min(lo, hi)), b = rank(std::max(lo, hi));
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(a), v.end());
+  const float va = v[a];
+  std::nth_element(v.begin() + static_cast<std::ptrdiff_t>(a), v.begin() + static_cast<std::ptrdiff_t>(b), v.end());
+  return {va, v[b]};
+}
+
 ValueRange resolve_range(const sph::SnapshotField& field, const ViewSettings& view, std::span<const std::uint8_t> kind) {
   if (!view.auto_range) return widen_degenerate(view.range_min, view.range_max);
+  if (view.percentile_lo > 0.f || view.percentile_hi < 100.f) {
+    const ValueRange r = percentile_range(field.values, view.percentile_lo, view.percentile_hi, kind);
+    return widen_degenerate(r.min, r.max);
+  }
   float lo = field.min, hi = field.max;
   if (!std::isfinite(lo) || !std::isfinite(hi) || lo > hi || (lo == 0.f && hi == 0.f)) {
     lo = INFINITY;

@@ -19,12 +19,15 @@ struct ValueRange {
   float min = 0.f, max = 1.f;  ///< min < max always [field units]
 };
 
-/// The range a field is shown with. Auto: the field's min/max over finite values of the fluid
-/// (recomputed if the snapshot's are not finite, leaving out particles whose `kind` is non-zero, i.e.
-/// walls; empty kind = all fluid); fixed: the settings' range. A degenerate range [v, v] is widened
-/// symmetrically so that v maps to the middle of the colour map.
+/// The range a field is shown with. Auto: the settings' percentiles of the finite values of the fluid
+/// (leaving out particles whose `kind` is non-zero, i.e. walls; empty kind = all fluid), at 0 and 100
+/// the field's min/max (recomputed if the snapshot's are not finite); fixed: the settings' range. A
+/// degenerate range [v, v] is widened symmetrically so that v maps to the middle of the colour map.
 ValueRange resolve_range(const sph::SnapshotField& field, const ViewSettings& view,
                          std::span<const std::uint8_t> kind = {});
+/// The fluid's finite values between percentiles lo and hi (in [0, 100]; nearest rank), not widened;
+/// {0, 0} without a finite value.
+ValueRange percentile_range(std::span<const float> values, float lo, float hi, std::span<const std::uint8_t> kind = {});
 /// Same widening for any [lo, hi] (also used for plot limits).
 ValueRange widen_degenerate(float lo, float hi);
 

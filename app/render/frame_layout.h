@@ -14,6 +14,7 @@ struct FrameLayout {
   PixelRect content;          ///< area left of the colour-bar panel, below the title
   PixelRect plot;             ///< particles' viewport: axes box (1D, 2D) or 3D view; whole pixels
   PixelRect colorbar;         ///< the gradient bar (empty when no field is shown)
+  PixelRect legend;           ///< the plot's legend box (empty when it has none)
   PixelRect panel;            ///< colour-bar panel: field label, bar, value labels
   Mat4 plot_to_clip;          ///< 2D/3D: world -> clip; 1D: (x, value, 0) -> clip
 

@@ -26,9 +26,10 @@ const sph::ExactCurve* shown_curve(const sph::Snapshot& snap, const ViewSettings
   return nullptr;
 }
 
-// Vertical limits: the colour range (fixed ranges are taken as given), widened to include the exact
-// curve and rounded outwards to tick values.
-void y_limits(const ShownField& shown, const sph::ExactCurve* curve, const ViewSettings& view, double& lo, double& hi) {
+// Vertical limits: a fixed colour range as given; else every fluid value (a percentile colour range
+// would push outliers off the plot), widened to include the exact curve and rounded outwards to ticks.
+void y_limits(const sph::Snapshot& snap, const ShownField& shown, const sph::ExactCurve* curve, const ViewSettings& view,
+              double& lo, double& hi) {
   lo = shown.range.min;
   hi = shown.range.max;
   if (shown.field == nullptr) {
@@ -36,6 +37,12 @@ void y_limits(const ShownField& shown, const sph::ExactCurve* curve, const ViewS
     return;
   }
   if (!view.auto_range) return;
+  ViewSettings all = view;
+  all.percentile_lo = 0.f;
+  all.percentile_hi = 100.f;
+  const ValueRange data = resolve_range(*shown.field, all, snap.kind);
+  lo = data.min;
+  hi = data.max;
   if (curve)
     for (float v : curve->value)
       if (std::isfinite(v)) lo = std::min(lo, double(v)), hi = std::max(hi, double(v));
@@ -83,7 +90,7 @@ void compose_profile(FrameBuild& f, const sph::Snapshot& snap, const ViewSetting
       }
     curve = log_curve.x.size() >= 2 ? &log_curve : nullptr;
   }
-  y_limits(shown, curve, view, r.y0, r.y1);
+  y_limits(snap, shown, curve, view, r.y0, r.y1);
 
   // Two passes: the y labels' width depends on the box height, which depends on the labels.
   PixelRect box = axes_box(L.content, y_label_width(f.text, r.y0, r.y1, L.content.h, s), s, lh, 0.f);
@@ -115,7 +122,15 @@ void compose_profile(FrameBuild& f, const sph::Snapshot& snap, const ViewSetting
     const std::string points = snap.points_label.empty() ? "SPH particles" : snap.points_label;
     const LegendEntry rows[2] = {{curve, false, {c.r, c.g, c.b, 1.f}, 0.75f * s + 0.5f, {0, 0, 0, 0}},
                                  {points, true, {mid.r, mid.g, mid.b, 1.f}, f.pixel_radius, {0, 0, 0, 0}}};
-    add_legend(f, box, rows);
+    // Keep the legend off the particles and the curve (it hid the shock in v_x and the u plateau).
+    std::vector<float> data;
+    data.reserve(2 * (f.instances.size() / kInstanceFloats) + 2 * xy.size());
+    for (std::size_t i = 0; i + 1 < f.instances.size(); i += kInstanceFloats) {
+      float px = NAN, py = NAN;
+      if (L.to_pixel(f.instances[i], f.instances[i + 1], 0.f, &px, &py)) data.push_back(px), data.push_back(py);
+    }
+    densify(xy, 2.f, &data);
+    add_legend(f, box, rows, data, f.pixel_radius + 2.f);
   }
 }
 

@@ -31,7 +31,10 @@ enum class SizeMode {
 struct ViewSettings {
   std::string color_by = "rho";  ///< SnapshotField::name shown by colour (and on the y axis in 1D)
   std::string cmap = "viridis";  ///< viridis, magma, cividis, coolwarm
-  bool auto_range = true;        ///< per frame: the field's min/max; else [range_min, range_max]
+  bool auto_range = true;        ///< per frame: the field's percentiles below; else [range_min, range_max]
+  /// Auto range between these percentiles of the fluid's finite values: 0, 100 = min/max; the GUI's
+  /// default 1, 99 keeps one outlier from squeezing every other particle into one colour.
+  float percentile_lo = 0.f, percentile_hi = 100.f;
   float range_min = 0.f, range_max = 1.f;  ///< fixed range [field units] (log10 of them with log_scale)
   bool show_trails = true;       ///< few-body 2D scenes: draw each particle's path so far (render::Trails)
   bool log_scale = false;        ///< colour (and profile axis) by log10 of the field; values <= 0 are not drawn

@@ -47,14 +47,14 @@ SceneSpec colliding_polytropes_scene() {
   s.description =
       "seed 003 §3.4.4: two relaxed n = 1 polytropes collide head-on and merge (|dE/E| <= 1e-2, |P| <= 5e-5 to t = 6)";
   s.dim = 3;
-  s.params = {{"n", 2000, 8, 1e6, true, "particles per star"},
-              {"d", 4.0, 2.0, 1e3, false, "distance between the centres along x [R] (2: touching)"},
+  s.params = {{"n", 2000, 8, 1e6, true, "particles per star", "count"},
+              {"d", 4.0, 2.0, 1e3, false, "distance between the centres along x [R] (2: touching)", "R (star radius)"},
               {"v", 1.0, 0.0, 1e3, false,
-               "relative speed [sqrt(G M / R)]; 1 = sqrt(2 G M_tot / d) at d = 4, a fall from rest at infinity"},
-              {"b", 0.0, 0.0, 1e3, false, "impact parameter: offset of the centres along y [R] (0: head-on)"},
+               "relative speed [sqrt(G M / R)]; 1 = sqrt(2 G M_tot / d) at d = 4, a fall from rest at infinity", "sqrt(G M / R)"},
+              {"b", 0.0, 0.0, 1e3, false, "impact parameter: offset of the centres along y [R] (0: head-on)", "R (star radius)"},
               {"relax", 3.0, 0.0, 100.0, false,
-               "relaxation time of the star with a = -v/tau, tau = 0.1 [time] (0: the random placement)"},
-              {"seed", 1, 0, 1e9, true, "random seed of the placement"}};
+               "relaxation time of the star with a = -v/tau, tau = 0.1 [time] (0: the random placement)", "time"},
+              {"seed", 1, 0, 1e9, true, "random seed of the placement", "dimensionless (random seed)"}};
   Params& d = s.defaults;
   d.physics.eos = EosType::IdealGas;
   d.physics.energy = Toggle::On;

@@ -35,8 +35,8 @@ SceneSpec dam_break_scene() {
   s.category = "free-surface liquids (seed 001)";
   s.description = "water column a x 2a collapses in a 4a tank; surge front vs Martin & Moyce 1952, Koshizuka & Oka 1996";
   s.dim = 2;
-  s.params = {{"a", 1.0, 0.01, 100.0, false, "column width a [m] (height 2a, tank length 4a)"},
-              {"dx", 0.025, 1e-4, 1.0, false, "particle spacing [m]"}};
+  s.params = {{"a", 1.0, 0.01, 100.0, false, "column width a [m] (height 2a, tank length 4a)", "m"},
+              {"dx", 0.025, 1e-4, 1.0, false, "particle spacing [m]", "m"}};
   // alpha = 0.2: the artificial viscosity between the fluid and the wall particles is the only wall
   // friction the scheme has, and the leading edge is a layer a few particles thick. Measured at dx = a/40
   // (front against the nearer data set, T <= 2.5): alpha = 0.1 runs ahead by up to 7.0%, 0.2 by up to
@@ -68,11 +68,11 @@ SceneSpec dam_break_slope_scene() {
   s.category = "free-surface liquids (seed 001)";
   s.description = "seed 001 §7.2: a column released towards a 30 degree slope, Lennard-Jones walls, dt = 0.15 ms; comes to rest";
   s.dim = 2;
-  s.params = {{"width", 0.3, 0.01, 10.0, false, "column width [m]"},
-              {"height", 0.6, 0.01, 10.0, false, "column height H [m]"},
-              {"floor", 0.6, 0.0, 100.0, false, "length of the flat floor before the slope [m]"},
-              {"angle", 30.0, 5.0, 80.0, false, "slope angle [degrees]"},
-              {"dx", 0.02, 1e-4, 1.0, false, "particle spacing [m]"}};
+  s.params = {{"width", 0.3, 0.01, 10.0, false, "column width [m]", "m"},
+              {"height", 0.6, 0.01, 10.0, false, "column height H [m]", "m"},
+              {"floor", 0.6, 0.0, 100.0, false, "length of the flat floor before the slope [m]", "m"},
+              {"angle", 30.0, 5.0, 80.0, false, "slope angle [degrees]", "degrees"},
+              {"dx", 0.02, 1e-4, 1.0, false, "particle spacing [m]", "m"}};
   s.defaults = liquid_defaults(0.6);
   s.defaults.physics.walls = WallType::LennardJones;  // seed 001 eq. 60
   // The standard formulation with XSPH (seed 001 eqs. 44-47). With the corrected gradients and these

@@ -72,13 +72,13 @@ SceneSpec elliptical_drop_scene() {
   d.time.dt_out = 0.0004;
   s.allow(Slot::Eos, {"tait"});
   s.allow(Slot::Walls, {"none"});
-  s.params = {{"dx", 0.025, 0.002, 0.2, false, "lattice spacing [m] (with random = 0)"},
-              {"random", 0, 0, 1, true, "1: random points as in the seed (count of them), 0: square lattice"},
-              {"count", 1308, 50, 1e6, true, "number of random points (seed 001: 1308)"},
-              {"seed", 1308, 0, 1e15, true, "random seed"},
-              {"A0", 100.0, -1e4, 1e4, false, "initial velocity gradient, v = (-A0 x, A0 y) [1/s]"},
+  s.params = {{"dx", 0.025, 0.002, 0.2, false, "lattice spacing [m] (with random = 0)", "m"},
+              {"random", 0, 0, 1, true, "1: random points as in the seed (count of them), 0: square lattice", "dimensionless (0 or 1)"},
+              {"count", 1308, 50, 1e6, true, "number of random points (seed 001: 1308)", "count"},
+              {"seed", 1308, 0, 1e15, true, "random seed", "dimensionless (random seed)"},
+              {"A0", 100.0, -1e4, 1e4, false, "initial velocity gradient, v = (-A0 x, A0 y) [1/s]", "1/s"},
               {"init_pressure", 1, 0, 1, true,
-               "1: start with the pressure of the incompressible flow, P = rho0 A0^2 (1 - r^2)/2; 0: at P = 0"}};
+               "1: start with the pressure of the incompressible flow, P = rho0 A0^2 (1 - r^2)/2; 0: at P = 0", "dimensionless (0 or 1)"}};
   s.build = [s](const Params& prm, const SceneValues& v) {
     const bool random = v.at("random") != 0.0;
     const std::vector<Vec3> pts = random ? random_disc(static_cast<std::size_t>(v.at("count")),

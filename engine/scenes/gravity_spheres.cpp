@@ -47,8 +47,8 @@ SceneSpec dust_sphere_scene() {
   SceneSpec s = sphere_base();
   s.name = "dust_sphere";
   s.description = "seed 003 §2.7: a pressureless sphere rho ~ 1/r collapses under its own gravity (N = 4000, eps = 0.1)";
-  s.params = {{"n", 4000, 2, 1e7, true, "number of particles"},
-              {"seed", 1, 0, 1e9, true, "random seed of the rejection sampling"}};
+  s.params = {{"n", 4000, 2, 1e7, true, "number of particles", "count"},
+              {"seed", 1, 0, 1e9, true, "random seed of the rejection sampling", "dimensionless (random seed)"}};
   make_nbody(s, GravityType::Tree, 1.0);
   s.defaults.gravity.eps = 0.1;  // seed 003 Fig. 2.17
   s.defaults.time.cfl = 0.05;    // dt = 0.05 sqrt(eps / |a|): |dE/E| < 1e-4 (0.2: 4e-3)
@@ -68,10 +68,10 @@ SceneSpec dust_collision_scene() {
   SceneSpec s = sphere_base();
   s.name = "dust_collision";
   s.description = "seed 003 §3.4.2: two rho ~ 1/r dust spheres meet head-on (4 apart, approaching at 0.5 each)";
-  s.params = {{"n", 1000, 2, 1e7, true, "particles per sphere (seed: 1000)"},
-              {"separation", 4.0, 0.0, 1e3, false, "distance between the centres (seed: 10)"},
-              {"speed", 0.5, 0.0, 1e3, false, "speed of each sphere towards the other (seed: 0)"},
-              {"seed", 1, 0, 1e9, true, "random seed of the rejection sampling"}};
+  s.params = {{"n", 1000, 2, 1e7, true, "particles per sphere (seed: 1000)", "count"},
+              {"separation", 4.0, 0.0, 1e3, false, "distance between the centres (seed: 10)", "length"},
+              {"speed", 0.5, 0.0, 1e3, false, "speed of each sphere towards the other (seed: 0)", "length/time"},
+              {"seed", 1, 0, 1e9, true, "random seed of the rejection sampling", "dimensionless (random seed)"}};
   make_nbody(s, GravityType::Tree, 1.0);
   s.defaults.gravity.eps = 0.1;
   s.defaults.time.cfl = 0.2;
@@ -93,9 +93,9 @@ SceneSpec evrard_scene() {
   SceneSpec s = sphere_base();
   s.name = "evrard";
   s.description = "seed 003 §3.4.1 (Evrard 1988): a cold gas sphere rho ~ 1/r collapses, bounces and heats (N = 4096)";
-  s.params = {{"n", 4096, 8, 1e7, true, "number of particles (seed: 4096)"},
-              {"u0", 0.05, 0.0, 10.0, false, "initial specific internal energy [G M / R] (seed: 0.05)"},
-              {"seed", 1, 0, 1e9, true, "random seed of the rejection sampling"}};
+  s.params = {{"n", 4096, 8, 1e7, true, "number of particles (seed: 4096)", "count"},
+              {"u0", 0.05, 0.0, 10.0, false, "initial specific internal energy [G M / R] (seed: 0.05)", "G M / R"},
+              {"seed", 1, 0, 1e9, true, "random seed of the rejection sampling", "dimensionless (random seed)"}};
   Params& d = s.defaults;
   d.physics.gravity = GravityType::Tree;
   d.gravity.G = 1.0;

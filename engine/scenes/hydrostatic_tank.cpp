@@ -16,9 +16,9 @@ SceneSpec hydrostatic_tank_scene() {
   s.category = "free-surface liquids (seed 001)";
   s.description = "water at rest in a 1 m tank under gravity; pressure against rho0 g (H - y)";
   s.dim = 2;
-  s.params = {{"width", 1.0, 0.01, 100.0, false, "tank width [m]"},
-              {"depth", 1.0, 0.01, 100.0, false, "water depth H [m]"},
-              {"dx", 0.025, 1e-4, 1.0, false, "particle spacing [m]"}};
+  s.params = {{"width", 1.0, 0.01, 100.0, false, "tank width [m]", "m"},
+              {"depth", 1.0, 0.01, 100.0, false, "water depth H [m]", "m"},
+              {"dx", 0.025, 1e-4, 1.0, false, "particle spacing [m]", "m"}};
   Params& d = s.defaults;
   d = tank_params(1.0, 0.1);
   d.time.t_end = 1.0;

@@ -49,8 +49,8 @@ SceneSpec two_body_fall_scene() {
   s.category = "gravity / N-body (seed 003 ch. 2)";
   s.description = "seed 003 §2.3: the Earth released at rest 1 AU from the Sun falls in; against the closed form eq. 2.17";
   s.dim = 2;
-  s.params = {{"r0", 1.0, 1e-3, 1e3, false, "initial separation [AU]"},
-              {"m_earth", kEarth, 0.0, 1.0, false, "mass of the falling body [Msun] (seed: 3.00e-6)"}};
+  s.params = {{"r0", 1.0, 1e-3, 1e3, false, "initial separation [AU]", "AU"},
+              {"m_earth", kEarth, 0.0, 1.0, false, "mass of the falling body [Msun] (seed: 3.00e-6)", "Msun"}};
   make_nbody(s, GravityType::Direct, kG);
   s.defaults.time.integrator = IntegratorType::RK4;  // the fall is not an orbit: accuracy, not symplecticity
   s.defaults.time.cfl = 0.01;                        // dt = 0.01 of the pair's dynamical time sqrt(r^3/mu)
@@ -67,10 +67,10 @@ SceneSpec kepler_scene() {
   s.category = "gravity / N-body (seed 003 ch. 2)";
   s.description = "seed 003 §2.4: Sun and Earth, v = 6.218 AU/yr (or any eccentricity); against the Kepler orbit";
   s.dim = 2;
-  s.params = {{"r0", 1.0, 1e-3, 1e3, false, "initial separation (aphelion when e >= 0) [AU]"},
-              {"v0", 6.218, 0.0, 1e3, false, "tangential speed of the Earth when e < 0 [AU/yr] (seed: 6.218)"},
-              {"e", -1.0, -1.0, 0.99, false, "eccentricity of an orbit started at aphelion; < 0: use v0"},
-              {"m_earth", kEarth, 0.0, 1.0, false, "mass of the orbiting body [Msun]"}};
+  s.params = {{"r0", 1.0, 1e-3, 1e3, false, "initial separation (aphelion when e >= 0) [AU]", "AU"},
+              {"v0", 6.218, 0.0, 1e3, false, "tangential speed of the Earth when e < 0 [AU/yr] (seed: 6.218)", "AU/yr"},
+              {"e", -1.0, -1.0, 0.99, false, "eccentricity of an orbit started at aphelion; < 0: use v0", "dimensionless"},
+              {"m_earth", kEarth, 0.0, 1.0, false, "mass of the orbiting body [Msun]", "Msun"}};
   make_nbody(s, GravityType::Direct, kG);
   s.defaults.time.dt = 0.002;  // fixed (leapfrog stays symplectic): 485 steps per orbit of the seed's 0.97 yr
   s.defaults.time.t_end = 10.0;

@@ -48,9 +48,9 @@ SceneSetup lattice(const SceneSpec& spec, const Params& prm, const SceneValues& 
 }
 
 std::vector<SceneParam> lattice_params(double n_side) {
-  return {{"n_side", n_side, 2, 2000, true, "particles per side of the lattice"},
-          {"mass", 0.1, 1e-12, 1e12, false, "particle mass (seed 000: 0.1)"},
-          {"u0", 0.05, 1e-12, 1e12, false, "initial specific internal energy (seed 000: 0.05)"}};
+  return {{"n_side", n_side, 2, 2000, true, "particles per side of the lattice", "count"},
+          {"mass", 0.1, 1e-12, 1e12, false, "particle mass (seed 000: 0.1)", "mass"},
+          {"u0", 0.05, 1e-12, 1e12, false, "initial specific internal energy (seed 000: 0.05)", "energy/mass"}};
 }
 
 }  // namespace
@@ -69,7 +69,7 @@ SceneSpec box_perturbed_scene() {
   s.name = "box_perturbed";
   s.description = "seed 000 §4.1.3: the lattice with one particle displaced; disorder spreads (t ~ 12)";
   s.params = lattice_params(10);
-  s.params.push_back({"shift", 0.2, -0.49, 0.49, false, "displacement of the centre particle, in lattice spacings"});
+  s.params.push_back({"shift", 0.2, -0.49, 0.49, false, "displacement of the centre particle, in lattice spacings", "lattice spacings"});
   s.build = [s](const Params& p, const SceneValues& v) {
     SceneSetup out = lattice(s, p, v);
     const auto n = static_cast<std::size_t>(v.at("n_side"));
@@ -86,10 +86,10 @@ SceneSpec box_random_scene() {
   s.name = "box_random";
   s.description = "seed 000 §4.1.4: 500 random particles in a periodic box, quintic kernel; relaxes";
   s.defaults.kernel.type = KernelType::M6;
-  s.params = {{"count", 500, 2, 1e7, true, "number of particles"},
-              {"mass", 0.1, 1e-12, 1e12, false, "particle mass"},
-              {"u0", 0.05, 1e-12, 1e12, false, "initial specific internal energy"},
-              {"seed", 2017, 0, 1e15, true, "random seed (same seed, same particles on every platform)"}};
+  s.params = {{"count", 500, 2, 1e7, true, "number of particles", "count"},
+              {"mass", 0.1, 1e-12, 1e12, false, "particle mass", "mass"},
+              {"u0", 0.05, 1e-12, 1e12, false, "initial specific internal energy", "energy/mass"},
+              {"seed", 2017, 0, 1e15, true, "random seed (same seed, same particles on every platform)", "dimensionless (random seed)"}};
   s.build = [s](const Params& prm, const SceneValues& v) {
     const auto n = static_cast<std::size_t>(v.at("count"));
     Particles p = make_particles(prm, s.dim, n);

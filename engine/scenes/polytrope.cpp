@@ -23,8 +23,8 @@ SceneSpec polytrope_scene() {
   s.category = "gravity / self-gravitating spheres (seed 003)";
   s.description = "seed 003 §3.4.3: a polytropic star (n = 1) from the Lane-Emden solution, relaxed by damping";
   s.dim = 3;
-  s.params = {{"n", 4000, 8, 1e7, true, "number of particles"},
-              {"seed", 1, 0, 1e9, true, "random seed of the placement"}};
+  s.params = {{"n", 4000, 8, 1e7, true, "number of particles", "count"},
+              {"seed", 1, 0, 1e9, true, "random seed of the placement", "dimensionless (random seed)"}};
   Params& d = s.defaults;
   d.physics.eos = EosType::Polytropic;
   d.physics.energy = Toggle::Off;

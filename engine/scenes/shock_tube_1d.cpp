@@ -62,16 +62,16 @@ SceneSetup build_tube(const SceneSpec& spec, const Params& prm, const SceneValue
 
 std::vector<SceneParam> tube_params(double x_lo, double x_hi, double rl, double pl, double rr, double pr, double nl) {
   return {
-      {"n_left", nl, 4, 1e6, true, "particles left of the diaphragm (the right side gets equal masses)"},
-      {"x_lo", x_lo, -1e3, 1e3, false, "left wall [length]"},
-      {"x_hi", x_hi, -1e3, 1e3, false, "right wall [length]"},
-      {"x0", 0.0, -1e3, 1e3, false, "diaphragm position [length]"},
-      {"rho_l", rl, 1e-6, 1e6, false, "left density"},
-      {"v_l", 0.0, -1e3, 1e3, false, "left velocity"},
-      {"p_l", pl, 1e-9, 1e9, false, "left pressure"},
-      {"rho_r", rr, 1e-6, 1e6, false, "right density"},
-      {"v_r", 0.0, -1e3, 1e3, false, "right velocity"},
-      {"p_r", pr, 1e-9, 1e9, false, "right pressure"},
+      {"n_left", nl, 4, 1e6, true, "particles left of the diaphragm (the right side gets equal masses)", "count"},
+      {"x_lo", x_lo, -1e3, 1e3, false, "left wall [length]", "length"},
+      {"x_hi", x_hi, -1e3, 1e3, false, "right wall [length]", "length"},
+      {"x0", 0.0, -1e3, 1e3, false, "diaphragm position [length]", "length"},
+      {"rho_l", rl, 1e-6, 1e6, false, "left density", "mass/length"},
+      {"v_l", 0.0, -1e3, 1e3, false, "left velocity", "length/time"},
+      {"p_l", pl, 1e-9, 1e9, false, "left pressure", "pressure"},
+      {"rho_r", rr, 1e-6, 1e6, false, "right density", "mass/length"},
+      {"v_r", 0.0, -1e3, 1e3, false, "right velocity", "length/time"},
+      {"p_r", pr, 1e-9, 1e9, false, "right pressure", "pressure"},
   };
 }
 

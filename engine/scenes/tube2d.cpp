@@ -21,8 +21,8 @@ SceneSpec tube2d_scene() {
   s.allow(Slot::Eos, {"ideal_gas", "isothermal"});
   s.allow(Slot::Walls, {"none"});
   s.energy_bound = 1e-3;  // measured to t = 20: 1.6e-5 (leapfrog)
-  s.params = {{"n_side", 16, 2, 2000, true, "lattice particles per unit length on the dense side (seed: 16)"},
-              {"u0", 0.05, 1e-12, 1e12, false, "initial specific internal energy (seed 000: 0.05)"}};
+  s.params = {{"n_side", 16, 2, 2000, true, "lattice particles per unit length on the dense side (seed: 16)", "particles per length"},
+              {"u0", 0.05, 1e-12, 1e12, false, "initial specific internal energy (seed 000: 0.05)", "energy/mass"}};
   s.build = [s](const Params& prm, const SceneValues& v) {
     const auto n = static_cast<std::size_t>(v.at("n_side"));  // dense block: n x n in [0,1]^2
     const std::size_t nr = n / 2;                               // light block: spacing 2/n

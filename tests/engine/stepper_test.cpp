@@ -325,6 +325,26 @@ TEST(Stepper, RecordingDeliversEveryFrameAtFixedTimes) {
   for (const auto& [k, t] : frames) EXPECT_NEAR(t, k * every, 1e-12) << "frame " << k;
 }
 
+// Recording does not shorten steps longer than the frame interval (it forced dt <= every for every
+// scene: box_perturbed fell to 9.8 steps/s); each step that reaches a frame time is recorded instead.
+TEST(Stepper, RecordingKeepsStepsLongerThanTheInterval) {
+  RunConfig cfg = small_sod();
+  cfg.params.time.dt = 1e-3;  // fixed, ten frame intervals
+  Stepper s(cfg, options(false));
+  ASSERT_TRUE(wait_for(s, [](const StepperFrame&) { return true; }));
+  s.set_record_interval(1e-4);
+  int recorded = 0;
+  for (int k = 1; k <= 5; ++k) {
+    s.step_once();
+    ASSERT_TRUE(wait_for(s, [k](const StepperFrame& f) { return f.snapshot.step == k; })) << k;
+    const StepperFrame* f = s.latest();
+    EXPECT_NEAR(f->snapshot.dt, 1e-3, 1e-15) << "step " << k << " was shortened to the frame interval";
+    EXPECT_NEAR(f->snapshot.t, k * 1e-3, 1e-12);
+    recorded += f->record_index >= 0;
+  }
+  EXPECT_EQ(recorded, 5);  // every step passed a frame time
+}
+
 // Recording from the start (StepperOptions::record_every): frame 0 is t = 0 even though the engine runs
 // at once.
 TEST(Stepper, RecordingFromTheFirstWorldStartsAtZero) {

@@ -99,6 +99,10 @@ if "$sph" run --help | grep -q -- "--frames"; then
     ok "frames $scene: at least two" test -s "$work/fr_$scene/frame_00001.png"
     ok "frames $scene: 640x480" test "$(png_size "$work/fr_$scene/frame_00001.png")" = "640x480"
   done
+  env -u DISPLAY "$sph" run sod --until 0 --frames "$work/pct" --range p1:99 --size 640x480 > /dev/null
+  check "frames with a percentile range" 0 $?
+  ok "percentile range frame" test -s "$work/pct/frame_00000.png"
+  bad reversed_percentiles 2 "pLO:HI" run sod --frames "$work/bp" --range p50:10
   bad odd_size 2 "size" run sod --frames "$work/odd" --size 641x480
   bad junk_size 2 "size" run sod --frames "$work/junk" --size 640x480junk
   bad unknown_field 2 "nope" run sod --frames "$work/nf" --color-by nope

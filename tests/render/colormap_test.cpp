@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "colormap.h"
+#include "palette.h"
 
 namespace sph::render {
 namespace {
@@ -74,8 +75,9 @@ TEST(Colormap, LutIsTheExactMapRoundedTo8Bits) {
   for (auto name : colormap_names()) {
     const Colormap m = *parse_colormap(name);
     const ColormapLut& lut = colormap_lut(m);
+    const float t0 = colormap_low_end(m);
     for (int i = 0; i < kColormapLutSize; ++i) {
-      const Rgb e = colormap_exact(m, i / 255.f);
+      const Rgb e = colormap_exact(m, t0 + (1.f - t0) * (i / 255.f));
       EXPECT_NEAR(lut[4 * i] / 255.f, e.r, 0.5f / 255.f + 1e-6f) << name << " " << i;
       EXPECT_NEAR(lut[4 * i + 1] / 255.f, e.g, 0.5f / 255.f + 1e-6f) << name << " " << i;
       EXPECT_NEAR(lut[4 * i + 2] / 255.f, e.b, 0.5f / 255.f + 1e-6f) << name << " " << i;
@@ -85,6 +87,23 @@ TEST(Colormap, LutIsTheExactMapRoundedTo8Bits) {
       EXPECT_NEAR(g.r * 255.f, lut[4 * i], 1e-3f);
     }
   }
+}
+
+// Low values were dark purple (viridis) or black (magma) dots on the dark-grey plot: every shown colour of
+// every map now keeps a contrast ratio of 1.5 against the plot fill and the frame background.
+TEST(Colormap, EveryShownColourStandsOutFromTheBackgrounds) {
+  for (auto name : colormap_names()) {
+    const Colormap m = *parse_colormap(name);
+    for (int i = 0; i <= 1020; ++i) {
+      const Rgb c = colormap_rgb(m, i / 1020.f);
+      for (const Rgba& bg : {palette::kPlotFill, palette::kBackground})
+        EXPECT_GE(contrast_ratio(c, {bg.r, bg.g, bg.b}), kMinBackgroundContrast) << name << " at t = " << i / 1020.f;
+    }
+    EXPECT_LT(colormap_low_end(m), 0.4f) << name << " keeps most of its published range";
+  }
+  EXPECT_EQ(colormap_low_end(Colormap::Coolwarm), 0.f);  // its blue end is light enough already
+  EXPECT_GT(contrast_ratio({1, 1, 1}, {0, 0, 0}), 20.9f);
+  EXPECT_LT(contrast_ratio({1, 1, 1}, {0, 0, 0}), 21.1f);
 }
 
 TEST(Colormap, SequentialMapsGetLighterMonotonically) {

@@ -77,5 +77,35 @@ TEST_F(Render1D, OtherFieldUsesItsOwnCurve) {
   EXPECT_TRUE(colour_near(rgba, px, py, curve, 1, 12));
 }
 
+
+// The legend sat in the top-right corner over the data (the shock in v_x, the u plateau). Mirrored Sod
+// has its rho = 1 plateau along the top right: the legend moves to where no particle or curve is.
+TEST_F(Render1D, LegendCoversNoData) {
+  Snapshot s = sod_profile_1d(400);
+  for (float& x : s.x) x = -x;
+  for (ExactCurve& c : s.exact)
+    for (float& x : c.x) x = -x;
+  for (const char* field : {"rho", "p"}) {
+    ViewSettings v;
+    v.color_by = field;
+    render(s, v);
+    const FrameLayout L = layout();
+    const PixelRect r = L.legend;
+    ASSERT_GT(r.w, 0.f) << field;
+    const float clear = 0.5f * v.point_px * 3.f;  // a dot's radius at this frame size
+    auto covered = [&](float x, float value) {
+      float px, py;
+      return L.to_pixel(x, value, 0.f, &px, &py) && px >= r.x - clear && px <= r.right() + clear &&
+             py >= r.y - clear && py <= r.bottom() + clear;
+    };
+    const SnapshotField& f = *s.find(field);
+    for (std::size_t i = 0; i < s.count; ++i) EXPECT_FALSE(covered(s.x[i], f.values[i])) << field << " particle " << i;
+    for (const ExactCurve& c : s.exact) {
+      if (c.field != field) continue;
+      for (std::size_t i = 0; i < c.x.size(); ++i) EXPECT_FALSE(covered(c.x[i], c.value[i])) << field << " curve " << i;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace sph::render::test

@@ -25,6 +25,7 @@ struct SceneParam {
   double min = 0.0, max = 0.0;
   bool integer = false;
   std::string description;
+  std::string unit;  ///< of value: "m", "count", "length/time", ... or "dimensionless"
 };
 
 using SceneValues = std::map<std::string, double>;

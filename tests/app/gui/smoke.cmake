@@ -1,6 +1,7 @@
 # ctest driver for sph-gui under Xvfb. Variables: XVFB_RUN, GUI, CHECK, OUT, MODE (smoke | keys | match), SPH.
 #   smoke: the issue's command line, then the screenshot checks;
 #   keys:  quick key taps through the key callback (--tap-keys) are all taken;
+#   end:   Space at t_end replays and stops at t_end again;
 #   match: the GUI records the t = 0 frame of sod, the headless program renders the same frame, and the
 #          two PNGs are compared.
 file(REMOVE_RECURSE ${OUT})
@@ -31,6 +32,15 @@ elseif(MODE STREQUAL "keys")
   message("${out}${err}")
   if(NOT rc EQUAL 0 OR NOT out MATCHES "last state: step 0,")
     message(FATAL_ERROR "expected a quick tap on R to reset to step 0")
+  endif()
+elseif(MODE STREQUAL "end")
+  # Space at t_end with "stop at t_end" ticked replays from t = 0 and stops at t_end again (it ran on to
+  # t = 0.77 on sod). t_end = 0.01 is reached long before the tap at frame 60.
+  execute_process(COMMAND ${XVFB_RUN} -a ${GUI} --scene sod --set time.t_end=0.01 --tap-keys "60: "
+                  --quit-after-frames 150 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err WORKING_DIRECTORY ${OUT})
+  message("${out}${err}")
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "last state: step [0-9]+, t = 0.01\n")
+    message(FATAL_ERROR "expected Space at t_end to replay and stop at t_end = 0.01")
   endif()
 elseif(MODE STREQUAL "match")
   run(${XVFB_RUN} -a ${GUI} --scene sod --paused --record ${OUT}/gui --record-size 1280x720 --quit-after-frames 60)

@@ -1,0 +1,31 @@
+// The diagnostics panel's text: values that never run wider than the column measured for them, and
+// plot titles that give the value of the frame on screen (a diverged run says so, rather than showing
+// the last sample taken before it blew up).
+#pragma once
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "sph/stepper.h"
+
+namespace sph::gui {
+
+/// v with `digits` significant digits ("%.*g"; "nan", "inf", "-inf" for non-finite values).
+std::string value_text(double v, int digits = 6);
+
+/// "E_tot = 1.2345", plus "  (diverged at step 812)" when the frame diverged.
+std::string plot_title(std::string_view name, double now, const StepperFrame& f);
+
+/// A row of the numbers table: name, value text, tooltip.
+struct DiagRow {
+  std::string name, value, tip;
+};
+
+/// Widths [px] of the name and value columns that hold every row, `measure` giving a text's width.
+struct DiagWidths {
+  float name = 0.f, value = 0.f;
+};
+DiagWidths diag_widths(const std::vector<DiagRow>& rows, const std::function<float(const std::string&)>& measure);
+
+}  // namespace sph::gui
