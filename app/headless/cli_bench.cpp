@@ -118,7 +118,7 @@ Snapshot plot_of(const SceneBench& b, int threads) {
 }  // namespace
 
 const std::vector<std::string>& default_bench_scenes() {
-  static const std::vector<std::string> scenes = {"sod", "shocktube_castellanos", "toro3"};
+  static const std::vector<std::string> scenes = {"sod", "shocktube_castellanos", "toro3", "sedov"};
   return scenes;
 }
 

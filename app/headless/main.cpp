@@ -60,7 +60,7 @@ int main(int argc, char** argv) {
   converge->add_flag("--quiet", conv.quiet, "no progress or table on the terminal");
   BenchOptions bench_opt;
   auto* bench = app.add_subcommand("bench", "work-precision report: error against wall time over resolutions x kernels x integrators");
-  bench->add_option("scenes", bench_opt.scenes, "scenes with a reference (default: sod, shocktube_castellanos, toro3)");
+  bench->add_option("scenes", bench_opt.scenes, "scenes with a reference (default: sod, shocktube_castellanos, toro3, sedov)");
   bench->add_option("--values", bench_opt.values, "comma-separated values of each scene's study key (default: the scene's)");
   bench->add_option("--kernels", bench_opt.kernels, "comma-separated kernels (default: M4,M6,wendland_c2; N-body and FPM scenes keep theirs)");
   bench->add_option("--integrators", bench_opt.integrators, "comma-separated integrators (default: leapfrog,rk4)");

@@ -73,11 +73,11 @@ SceneSpec noh_scene() {
   s.allow(Slot::Eos, {"ideal_gas"});
   s.allow(Slot::Energy, {"on"});
   s.allow(Slot::Walls, {"none"});
-  s.params = {{"n_side", 200, 4, 20000, true, "lattice spacings across the disc's diameter (spacing 2 radius / n_side)"},
-              {"radius", 1.0, 0.01, 1e3, false, "initial radius of the gas disc [length]"},
-              {"rho0", 1.0, 1e-9, 1e9, false, "initial density"},
-              {"v0", 1.0, 1e-9, 1e9, false, "inflow speed [length/time]"},
-              {"u0", 1e-6, 0.0, 1e3, false, "initial specific internal energy (tiny: cold gas)"}};
+  s.params = {{"n_side", 200, 4, 20000, true, "lattice spacings across the disc's diameter (spacing 2 radius / n_side)", "count"},
+              {"radius", 1.0, 0.01, 1e3, false, "initial radius of the gas disc [length]", "length"},
+              {"rho0", 1.0, 1e-9, 1e9, false, "initial density", "mass/volume"},
+              {"v0", 1.0, 1e-9, 1e9, false, "inflow speed [length/time]", "length/time"},
+              {"u0", 1e-6, 0.0, 1e3, false, "initial specific internal energy (tiny: cold gas)", "energy/mass"}};
   s.build = [](const Params& p, const SceneValues& v) { return build_noh(p, v); };
   s.reference = [](const Params& p, const SceneValues& v) -> std::unique_ptr<Reference> {
     NohSetup r;

@@ -16,7 +16,33 @@ struct TubeSetup {
   double x_lo, x_hi, x0;
   GasState left, right;
   std::size_t n_left, n_right;
+  double w = 0.0;  ///< width of the smoothed diaphragm (0: a sharp one) [length]
 };
+
+/// log cosh z without overflow: |z| + log(1 + e^{-2|z|}) - log 2.
+double log_cosh(double z) { return std::abs(z) + std::log1p(std::exp(-2.0 * std::abs(z))) - std::log(2.0); }
+
+/// Where the smoothed diaphragm has reached: s = (1 + tanh((x - x0)/w)) / 2, 0 on the left, 1 on the right
+/// (a step at x0 for w = 0). Every initial field f(x) = f_L + (f_R - f_L) s(x) (Price 2008, J. Comput.
+/// Phys. 227, 10040, §5.1, smooths the initial jump this way).
+double blend(double x, const TubeSetup& t) {
+  if (t.w <= 0.0) return x < t.x0 ? 0.0 : 1.0;
+  return 0.5 * (1.0 + std::tanh((x - t.x0) / t.w));
+}
+
+GasState state_at(double x, const TubeSetup& t) {
+  const double b = blend(x, t);
+  return {t.left.rho + (t.right.rho - t.left.rho) * b, t.left.v + (t.right.v - t.left.v) * b,
+          t.left.p + (t.right.p - t.left.p) * b};
+}
+
+/// Mass per unit area between x_lo and x of the smoothed density: rho_L (x - lo) + (rho_R - rho_L) S,
+/// S = integral of s = ((x - lo) + w (log cosh((x - x0)/w) - log cosh((lo - x0)/w))) / 2.
+double mass_below(double x, const TubeSetup& t) {
+  const double S =
+      0.5 * ((x - t.x_lo) + t.w * (log_cosh((x - t.x0) / t.w) - log_cosh((t.x_lo - t.x0) / t.w)));
+  return t.left.rho * (x - t.x_lo) + (t.right.rho - t.left.rho) * S;
+}
 
 TubeSetup tube_from(const SceneValues& v) {
   TubeSetup t{v.at("x_lo"),
@@ -25,7 +51,8 @@ TubeSetup tube_from(const SceneValues& v) {
               {v.at("rho_l"), v.at("v_l"), v.at("p_l")},
               {v.at("rho_r"), v.at("v_r"), v.at("p_r")},
               static_cast<std::size_t>(v.at("n_left")),
-              0};
+              0,
+              v.at("smooth")};
   // equal masses: n_right / n_left = (rho_r L_r) / (rho_l L_l), rounded; the right spacing is then
   // m / rho_r exactly and the right wall moves by less than half a spacing (the density stays exact)
   const double ratio = (t.right.rho * (t.x_hi - t.x0)) / (t.left.rho * (t.x0 - t.x_lo));
@@ -46,9 +73,17 @@ SceneSetup build_tube(const SceneSpec& spec, const Params& prm, const SceneValue
   const double eta = effective_eta(prm, 1);
   for (std::size_t i = 0; i < n; ++i) {
     const bool left = i < t.n_left;
-    const double dx = left ? dxl : dxr;
+    double dx = left ? dxl : dxr;
     p.x[0][i] = left ? t.x_lo + (i + 0.5) * dxl : t.x0 + (i - t.n_left + 0.5) * dxr;
-    const GasState& g = left ? t.left : t.right;
+    if (t.w > 0.0) {  // equal masses on the smoothed density: particle i at mass_below(x) = (i + 1/2) m
+      double lo = t.x_lo, hi = t.x_hi;
+      const double target = (static_cast<double>(i) + 0.5) * m;
+      for (int it = 0; it < 100 && hi - lo > 1e-15 * (t.x_hi - t.x_lo); ++it)
+        (mass_below(0.5 * (lo + hi), t) < target ? lo : hi) = 0.5 * (lo + hi);
+      p.x[0][i] = 0.5 * (lo + hi);
+    }
+    const GasState g = state_at(p.x[0][i], t);
+    if (t.w > 0.0) dx = m / g.rho;
     p[Field::Mass][i] = m;
     p[Field::H][i] = eta * dx;
     if (p.has(Field::Energy)) p[Field::Energy][i] = energy_from_pressure(g.p, g.rho, prm.gas.gamma);
@@ -71,6 +106,11 @@ std::vector<SceneParam> tube_params(double x_lo, double x_hi, double rl, double 
       {"p_l", pl, 1e-9, 1e9, false, "left pressure", "pressure"},
       {"rho_r", rr, 1e-6, 1e6, false, "right density", "mass/length"},
       {"v_r", 0.0, -1e3, 1e3, false, "right velocity", "length/time"},
+      {"smooth", 0.0, 0.0, 1e3, false,
+       "width w of a smoothed diaphragm: rho, v, P follow (1 + tanh((x - x0)/w)) / 2 between the two states "
+       "(0: sharp); the reference stays the sharp problem's, which the run approaches once the waves are many "
+       "w wide",
+       "length"},
       {"p_r", pr, 1e-9, 1e9, false, "right pressure", "pressure"},
   };
 }
@@ -95,7 +135,7 @@ SceneSpec sod_scene() {
   s.params = tube_params(-0.5, 0.5, 1.0, 1.0, 0.125, 0.1, 400);
   s.convergence = {"scene.n_left", {100, 200, 400, 800, 1600}, -1.0};  // as tests/bench/sod_bench
   s.build = [s](const Params& p, const SceneValues& v) { return build_tube(s, p, v); };
-  s.initial_pressure = [](const Vec3& r, const SceneValues& v) { return r.x < v.at("x0") ? v.at("p_l") : v.at("p_r"); };
+  s.initial_pressure = [](const Vec3& r, const SceneValues& v) { return state_at(r.x, tube_from(v)).p; };
   // the middle of the left state: far from the diaphragm and (mirror) wall
   s.density_anchor = [](const SceneValues& v) {
     return std::pair<std::size_t, double>(static_cast<std::size_t>(v.at("n_left")) / 2, v.at("rho_l"));
