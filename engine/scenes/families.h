@@ -27,5 +27,7 @@ SceneSpec polytrope_scene();
 SceneSpec colliding_polytropes_scene();
 SceneSpec burgers_viscous_scene();
 SceneSpec burgers_upwind_scene();
+SceneSpec gresho_scene();
+SceneSpec kelvin_helmholtz_scene();
 
 }  // namespace sph::scenes

@@ -13,7 +13,8 @@ const std::vector<SceneSpec>& scene_registry() {
       scenes::hydrostatic_tank_scene(), scenes::two_body_fall_scene(), scenes::kepler_scene(),
       scenes::solar_system_scene(), scenes::dust_sphere_scene(), scenes::dust_collision_scene(),
       scenes::evrard_scene(), scenes::polytrope_scene(), scenes::colliding_polytropes_scene(),
-      scenes::burgers_viscous_scene(), scenes::burgers_upwind_scene()})
+      scenes::burgers_viscous_scene(), scenes::burgers_upwind_scene(),
+      scenes::gresho_scene(), scenes::kelvin_helmholtz_scene()})
       t.push_back(std::move(s));
     return t;
   }();
