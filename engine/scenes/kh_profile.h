@@ -1,4 +1,4 @@
-// The smooth Kelvin-Helmholtz set-up of McNally, Lyra & Passy (2012, ApJS 201, 18, §2, eqs. 1-4) on the
+// The smooth Kelvin-Helmholtz set-up of McNally, Lyra & Passy (2012, ApJS 201, 18: their initial conditions) on the
 // periodic unit square: a dense band rho2 = 2 moving at U2 = -0.5 for 0.25 < y < 0.75 between light gas
 // rho1 = 1 at U1 = +0.5, joined by exponential ramps of width L (0.025) that are C1 at y = 0.25, 0.75:
 //   y < 1/4:       rho = rho1 - rho_m e^((y-1/4)/L),   U = U1 - U_m e^((y-1/4)/L)

@@ -54,7 +54,7 @@ class KhReference final : public Reference {
         sheet_(kh_vortex_sheet_rate(kK, kh::kRho1, kh::kRho2, kh::kU2 - kh::kU1)) {}
 
   std::vector<RefColumn> columns() const override {
-    return {{"amplitude", "mode amplitude M of v_y at k = 4 pi (McNally et al. 2012 eqs. 6-9) [length/time]", false},
+    return {{"amplitude", "mode amplitude M of v_y at k = 4 pi (McNally et al. 2012's diagnostic) [length/time]", false},
             {"rate_fit", "least-squares slope of ln M over the evaluations in [fit_t0, min(t, fit_t1)] [1/time]", false},
             {"rate_theory", "linear growth rate of the smooth compressible profile (shooting) [1/time]", false},
             {"rate_ratio", "rate_fit / rate_theory", false},
