@@ -1,5 +1,5 @@
-// The Gresho-Chan vortex (Gresho & Chan 1990; as posed by Liska & Wendroff 2003, §4.7, and Springel
-// 2010, MNRAS 401, 791, §8.5): rho = 1, gamma = 5/3, v_phi = 5r | 2 - 5r | 0 on r < 0.2 | < 0.4 | beyond,
+// The Gresho-Chan vortex (Gresho & Chan 1990; as posed by Liska & Wendroff 2003 and Springel
+// 2010, MNRAS 401, 791): rho = 1, gamma = 5/3, v_phi = 5r | 2 - 5r | 0 on r < 0.2 | < 0.4 | beyond,
 // P balancing the rotation (reference/gresho_reference.h), in the periodic box [-0.5, 0.5]^2 centred on
 // the vortex (the reference's r, and the profile view's axis r, are distances from the origin). The
 // solution is stationary: everything SPH does to it is error. The pressure is set exactly through the

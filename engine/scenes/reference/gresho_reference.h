@@ -1,5 +1,5 @@
 // The Gresho-Chan vortex (Gresho & Chan 1990, Int. J. Numer. Meth. Fluids 11, 621; the set-up of Liska &
-// Wendroff 2003, SIAM J. Sci. Comput. 25, 995, §4.7): a stationary solution of the Euler equations, the
+// Wendroff 2003, SIAM J. Sci. Comput. 25, 995): a stationary solution of the Euler equations, the
 // rotation balanced by the pressure gradient dP/dr = rho v_phi^2 / r. Centred on the origin.
 #pragma once
 #include <memory>
