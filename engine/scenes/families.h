@@ -30,5 +30,7 @@ SceneSpec burgers_upwind_scene();
 SceneSpec sedov_scene();
 SceneSpec sedov3d_scene();
 SceneSpec noh_scene();
+SceneSpec gresho_scene();
+SceneSpec kelvin_helmholtz_scene();
 
 }  // namespace sph::scenes

@@ -14,7 +14,7 @@ const std::vector<SceneSpec>& scene_registry() {
       scenes::solar_system_scene(), scenes::dust_sphere_scene(), scenes::dust_collision_scene(),
       scenes::evrard_scene(), scenes::polytrope_scene(), scenes::colliding_polytropes_scene(),
       scenes::burgers_viscous_scene(), scenes::burgers_upwind_scene(), scenes::sedov_scene(),
-      scenes::sedov3d_scene(), scenes::noh_scene()})
+      scenes::sedov3d_scene(), scenes::noh_scene(), scenes::gresho_scene(), scenes::kelvin_helmholtz_scene()})
       t.push_back(std::move(s));
     return t;
   }();
