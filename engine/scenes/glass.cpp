@@ -37,7 +37,7 @@ SceneSpec relax_spec(int dim) {
   d.physics.energy = Toggle::Off;
   d.physics.body_force = BodyForce::Damping;
   d.gas.cs = 1.0;
-  s.params = {{"n", 1000, 2, 1e8, true, "particles"}, {"seed", 1, 0, 1e15, true, "random seed"}};
+  s.params = {{"n", 1000, 2, 1e8, true, "particles", "count"}, {"seed", 1, 0, 1e15, true, "random seed", "dimensionless"}};
   s.build = [dim](const Params& prm, const SceneValues& v) {
     const auto n = static_cast<std::size_t>(v.at("n"));
     const std::vector<Vec3> x = glass_random_start(dim, n, static_cast<std::uint64_t>(v.at("seed")));

@@ -27,4 +27,20 @@ void without_sph(SceneSpec& s) {
   s.allow(Slot::Smoothing, {"fixed"});
 }
 
+SceneSpec gas_test_scene(std::string name, std::string category, std::string description, int dim, KernelType kernel,
+                         double gamma, double alpha, double beta) {
+  SceneSpec s;
+  s.name = std::move(name);
+  s.category = std::move(category);
+  s.description = std::move(description);
+  s.dim = dim;
+  s.defaults.kernel.type = kernel;
+  s.defaults.gas.gamma = gamma;
+  s.defaults.visc.alpha = alpha;
+  s.defaults.visc.beta = beta;
+  s.allow(Slot::Eos, {"ideal_gas"});  // the references are ideal-gas solutions
+  s.allow(Slot::Walls, {"none"});
+  return s;
+}
+
 }  // namespace sph::scenes

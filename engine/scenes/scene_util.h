@@ -2,6 +2,7 @@
 #pragma once
 #include <cmath>
 #include <cstdint>
+#include <string>
 
 #include "sph/scene.h"
 
@@ -34,6 +35,11 @@ double effective_eta(const Params& prm, int dim);
 /// viscosity and energy set to none (and only none accepted, as for XSPH, conduction, body force and
 /// walls), h fixed.
 void without_sph(SceneSpec& s);
+
+/// The common start of a gas test scene: ideal gas only, no walls, the given kernel, gamma and
+/// Monaghan viscosity (alpha, beta); the caller adds the rest.
+SceneSpec gas_test_scene(std::string name, std::string category, std::string description, int dim, KernelType kernel,
+                         double gamma, double alpha, double beta);
 
 /// Sets u from pressure for an ideal gas: u = P / ((gamma - 1) rho).
 inline double energy_from_pressure(double P, double rho, double gamma) { return P / ((gamma - 1.0) * rho); }

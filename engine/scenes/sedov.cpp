@@ -60,24 +60,14 @@ SceneSetup build_blast(int dim, const Params& prm, const SceneValues& v) {
 }
 
 SceneSpec blast_scene(int dim, const char* name, const char* description, double half, double n_side) {
-  SceneSpec s;
-  s.name = name;
-  s.category = "gas dynamics / blast waves";
-  s.description = description;
-  s.dim = dim;
+  SceneSpec s = gas_test_scene(name, "gas dynamics / blast waves", description, dim, KernelType::M4, 5.0 / 3.0, 1.0, 2.0);
   Params& d = s.defaults;
-  d.kernel.type = KernelType::M4;
-  d.gas.gamma = 5.0 / 3.0;
-  d.visc.alpha = 1.0;
-  d.visc.beta = 2.0;
   d.physics.conduction = Toggle::On;
   d.conduction.alpha_u = 1.0;
   d.time.integrator = IntegratorType::Leapfrog;
   d.time.t_end = 0.1;
   d.time.dt_out = 0.025;
-  s.allow(Slot::Eos, {"ideal_gas"});  // the similarity solution is an ideal-gas solution
   s.allow(Slot::Energy, {"on"});
-  s.allow(Slot::Walls, {"none"});
   s.params = {{"n_side", n_side, 4, 4000, true, "lattice spacings across the box side (the spacing is 2 half / n_side)", "count"},
               {"half", half, 0.05, 1e3, false, "half-width of the periodic box [length]", "length"},
               {"E", 1.0, 1e-9, 1e9, false, "blast energy (2D: per unit length)", "energy"},
