@@ -61,8 +61,8 @@ std::string markdown_text(const std::vector<SceneBench>& all, int threads) {
   char buf[320];
   for (const SceneBench& b : all) {
     const Series& first = b.series.front();
-    std::snprintf(buf, sizeof buf, "### `%s`: %s at t = %g against wall time (%d threads)\n\n", b.scene.c_str(),
-                  first.study.column.c_str(), first.result.t, threads);
+    std::snprintf(buf, sizeof buf, "### `%s`: %s at t = %g against wall time (%d thread%s)\n\n", b.scene.c_str(),
+                  first.study.column.c_str(), first.result.t, threads, threads == 1 ? "" : "s");
     s += buf;
     s += "| kernel / integrator | " + first.study.key + " | particles | " + first.study.column +
          " | order | wall [s] | steps |\n|---|---:|---:|---:|---:|---:|---:|\n";
@@ -106,8 +106,9 @@ Snapshot plot_of(const SceneBench& b, int threads) {
   s.bounds = {x0 - px, x1 + px, y0 - py, y1 + py, 0.f, 1.f};
   const Series& first = b.series.front();
   char title[256];
-  std::snprintf(title, sizeof title, "work precision of %s: %s at t = %g against wall time (%s, %d threads)",
-                b.scene.c_str(), first.study.column.c_str(), first.result.t, first.study.key.c_str(), threads);
+  std::snprintf(title, sizeof title, "work precision of %s: %s at t = %g against wall time (%s, %d thread%s)",
+                b.scene.c_str(), first.study.column.c_str(), first.result.t, first.study.key.c_str(), threads,
+                threads == 1 ? "" : "s");
   s.title = title;
   s.x_label = "log10 wall time [s]";
   s.y_label = "log10 " + first.study.column;
@@ -135,13 +136,13 @@ int bench_command(const BenchOptions& opt) {
       apply_sets(cfg, opt.sets);
       cfg.validate();
       std::vector<std::string> kernels = split_names(opt.kernels);
-      if (!uses_kernels(cfg)) kernels = {to_string(cfg.params.kernel.type)};
+      if (!uses_kernels(cfg)) kernels = {"-"};  // N-body and FPM scenes: --kernels does not apply
       else if (kernels.empty()) kernels = {"M4", "M6", "wendland_c2"};
       SceneBench b{cfg.scene->name, {}};
       for (const std::string& k : kernels)
         for (const std::string& integ : integrators) {
           Series se{k, integ, cfg, {}, {}};
-          se.base.set("kernel.type", k, "--kernels");
+          if (uses_kernels(cfg)) se.base.set("kernel.type", k, "--kernels");  // else the kernel is not a parameter
           se.base.set("time.integrator", integ, "--integrators");
           ConvergenceStudy asked;
           asked.values = values;

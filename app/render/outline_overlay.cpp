@@ -60,7 +60,7 @@ void add_outlines(FrameBuild& f, const sph::Snapshot& snap) {
     for (const PixelOutline& p : lines) {
       const Rgba c = layer == 0 ? palette::kOutlineHalo : p.color;
       if (p.xy.size() == 2) {  // one vertex: a dot
-        if (std::isfinite(p.xy[0]) && std::isfinite(p.xy[1])) f.clipped.disc(p.xy[0], p.xy[1], 0.5f * lw + 0.5f, c);
+        if (std::isfinite(p.xy[0]) && std::isfinite(p.xy[1])) f.clipped.disc(p.xy[0], p.xy[1], 1.5f * lw + 1.f, c);  // a marker: wider than the lines
       } else {
         f.clipped.polyline(p.xy, lw, c);
       }

@@ -34,7 +34,7 @@ SceneSpec burgers_base(FpmType type) {
   s.defaults.time.t_end = 1.0;
   s.defaults.time.dt_out = 0.25;
   s.defaults.fpm.eps = type == FpmType::BurgersViscous ? 0.005 : 0.0;
-  s.convergence = {"scene.n", {60, 120, 240, 480, 960, 1920}, 0.8};  // seed 002 Table 1
+  s.convergence = {"scene.n", {60, 120, 240, 480, 960, 1920}, 0.8, ""};  // seed 002 Table 1
   s.params = {{"n", 300, 8, 1e6, true, "number of points N", "count"},
               {"a", 1.0, 0.01, 100.0, false, "ramp width a of u0 (seed 002 eq. 6c) [length]", "length"},
               {"x_lo", -0.5, -1e3, 1e3, false, "left end [length]", "length"},

@@ -52,7 +52,7 @@ SceneSpec gresho_scene() {
   };
   s.initial_pressure = [](const Vec3& x, const SceneValues&) { return gresho_pressure(std::hypot(x.x, x.y)); };
   s.reference = [](const Params&, const SceneValues&) { return make_gresho_reference(); };
-  s.convergence = {"scene.n_side", {32, 64, 128}, 1.0};
+  s.convergence = {"scene.n_side", {32, 64, 128}, 1.0, ""};
   s.energy_bound = 1e-3;  // measured to t = 1 at 64: 7.0e-5
   return s;
 }

@@ -62,7 +62,7 @@ SceneSpec kelvin_helmholtz_scene() {
   s.reference = [](const Params& prm, const SceneValues& v) {
     return make_kh_reference(v.at("ramp"), prm.gas.gamma, v.at("fit_t0"), v.at("fit_t1"));
   };
-  s.convergence = {"scene.n_side", {32, 64, 128}, -1.0};
+  s.convergence = {"scene.n_side", {32, 64, 128}, -1.0, ""};
   s.energy_bound = 1e-3;  // measured to t = 1.5 at 64: 4.3e-5
   return s;
 }

@@ -77,6 +77,8 @@ SceneSpec kepler_scene() {
   s.defaults.time.dt_out = 0.1;
   s.build = [](const Params& prm, const SceneValues& v) { return bodies_setup(prm, 2, kepler_bodies(v), 1.3 * v.at("r0")); };
   s.reference = [](const Params& prm, const SceneValues& v) { return make_kepler_reference(kepler_bodies(v), prm.gravity.G); };
+  // the energy error of ten years against the timestep (seed 003 eq. 2.24): sph bench kepler
+  s.convergence = {"time.dt", {0.008, 0.004, 0.002, 0.001}, 10.0, "dE"};
   return s;
 }
 

@@ -81,7 +81,7 @@ SceneSpec noh_scene() {
     r.r_max = v.at("radius");
     return make_noh_reference(r);
   };
-  s.convergence = {"scene.n_side", {50, 100, 200, 400}, -1.0};
+  s.convergence = {"scene.n_side", {50, 100, 200, 400}, -1.0, ""};
   s.energy_bound = 2e-3;  // measured to t = 0.6 at 100: 1.6e-4
   return s;
 }

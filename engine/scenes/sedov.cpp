@@ -86,7 +86,7 @@ SceneSpec blast_scene(int dim, const char* name, const char* description, double
     r.r_max = v.at("half");
     return make_sedov_reference(r);
   };
-  s.convergence = {"scene.n_side", {32, 64, 128}, -1.0};
+  s.convergence = {"scene.n_side", {32, 64, 128}, -1.0, ""};
   // measured at the defaults to t = 0.1: 2D at most 8.0e-4, 3D 1.05e-3 (the deposit's first steps)
   s.energy_bound = dim == 2 ? 2e-3 : 3e-3;
   return s;

@@ -167,6 +167,9 @@ ok "bench md" grep -q "| wendland_c2 / leapfrog | 100 |" "$work/bench/bench.md"
 if "$sph" run --help | grep -q -- "--frames"; then
   ok "bench plot" test "$(png_size "$work/bench/bench_sod.png")" = "1280x720"
 fi
+# a timestep study (kepler's energy error against time.dt): leapfrog is second order, --kernels ignored
+"$sph" bench kepler --values 0.008,0.004 --kernels M6 --integrators leapfrog --out "$work/bk" --quiet; check "bench kepler" 0 $?
+ok "bench kepler: order 2" grep -q "| - / leapfrog | 0.004 | 2 | .* | 1.9[0-9] |" "$work/bk/bench.md"
 bad bench_bad_kernel 3 "M9" bench sod --kernels M9 --values 50,100
 bad bench_bad_integrator 3 "verlet" bench sod --integrators verlet --values 50,100
 bad bench_no_reference 3 "reference" bench box_lattice

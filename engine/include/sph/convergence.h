@@ -1,6 +1,7 @@
 // Convergence studies: a scene with a reference run over a list of values of one key (usually its
 // resolution), the error of one reference column at a fixed time, and the observed order between
-// consecutive runs p = log(e1/e2) / log(h1/h2), h the scene's initial particle spacing (seed 002 §4.3),
+// consecutive runs p = log(e1/e2) / log(h1/h2), h the scene's initial particle spacing (seed 002 §4.3)
+// or, for a study of time.dt, the timestep,
 // with the least-squares slope of log e against log h over all runs.
 #pragma once
 #include <cstdint>
@@ -21,7 +22,7 @@ struct ConvergenceStudy {
 
 struct ConvergenceRun {
   double value = 0.0;   ///< of the key
-  double h = 0.0;       ///< initial particle spacing [length]
+  double h = 0.0;       ///< initial particle spacing [length] (the timestep for a study of time.dt)
   double error = 0.0;   ///< the column's value at t
   double order = 0.0;   ///< against the previous run (NaN for the first)
   double wall_s = 0.0;  ///< wall time of the run [s]

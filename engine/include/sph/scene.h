@@ -45,6 +45,7 @@ struct ConvergenceDefaults {
   std::string key;
   std::vector<double> values;
   double t = -1.0;
+  std::string column;  ///< the reference column compared (empty: its primary error)
 };
 
 struct SceneSpec {

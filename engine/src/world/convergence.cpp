@@ -38,6 +38,7 @@ ConvergenceStudy resolve_study(const RunConfig& base, const ConvergenceStudy& as
   probe.set(s.key, format(s.values.front()), "--key " + s.key);
   World w(probe);
   const auto& cols = w.reference_columns();
+  if (s.column.empty() && s.key == d.key) s.column = d.column;
   if (s.column.empty()) {
     const int k = w.reference()->primary();
     s.column = cols.at(static_cast<std::size_t>(k)).name;
@@ -67,7 +68,7 @@ ConvergenceResult run_convergence(const RunConfig& base, const ConvergenceStudy&
     while (w.time() < study.t) w.step(study.t - w.time());
     ConvergenceRun run;
     run.value = value;
-    run.h = w.spacing();
+    run.h = study.key == "time.dt" ? value : w.spacing();  // a timestep study converges in dt
     run.error = w.reference_value(study.column);
     run.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     run.steps = w.steps();
