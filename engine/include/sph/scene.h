@@ -70,7 +70,8 @@ struct SceneSpec {
   std::function<double(const Vec3&, const SceneValues&)> initial_pressure;
   /// Energy conservation a correct run keeps: |E_tot - E_tot(step 1)| over the initial energy scale
   /// |E_kin| + |E_int| + |E_pot| stays below this (measured at the defaults, with margin; README). A
-  /// run beyond it gets an "energy" warning, beyond 100 times it (at most 0.1) it stops as unstable.
+  /// run beyond it gets an "energy" warning, beyond 100 times it (at most 0.1) it stops as unstable
+  /// (checked every step; every 16 steps with gravity).
   /// 0: the scene does not conserve energy (walls doing work, damping, physical viscosity...).
   double energy_bound = 0.0;
   ConvergenceDefaults convergence;  ///< empty key: scene.n over 60 ... 1920 if the scene has n

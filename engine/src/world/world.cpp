@@ -102,6 +102,7 @@ World::World(const RunConfig& cfg)
                             std::to_string(eta()) + "): change kernel.eta, or raise h.max_iter");
   current_ = true;
   reorder();
+  crossings_ = WallCrossings{};  // storage indices changed; a start is placed inside its walls
   check_finite();
 }
 

@@ -94,9 +94,11 @@ void World::check_energy() {
   // Every stage conserves or dissipates E_kin + E_int + E_pot (the corrected forms to truncation error),
   // so a total energy that grows by many times its initial scale is a blow-up that has not (yet) reached
   // inf or NaN. A scene that conserves energy is checked every step against its bound (a pass over the
-  // particles); the others every 16 steps (the potentials cost a pass over the neighbours).
+  // particles); the others, and those with gravity (whose potential may need a tree walk of its own),
+  // every 16 steps.
   const double bound = cfg_.scene->energy_bound;
-  if (step_ % 16 != 0 && energy_scale_ >= 0.0 && bound <= 0.0) return;
+  const bool every_step = bound > 0.0 && cfg_.params.physics.gravity == GravityType::None;
+  if (step_ % 16 != 0 && energy_scale_ >= 0.0 && !every_step) return;
   const Diagnostics d = diagnostics();
   if (energy_scale_ < 0.0) {
     energy_scale_ = std::abs(d.E_kin) + std::abs(d.E_int) + std::abs(d.E_pot);
