@@ -3,7 +3,9 @@
 // particle (list entries and inside the support), bytes per particle, the density solve's iterations,
 // ns per neighbour-evaluation of the density sum (per neighbour inside the support, per h iteration) and
 // of the force loop (per neighbour), and ns per list entry for every part of the evaluation. The
-// per-neighbour figures compare with calibration_bench's "ns per neighbour".
+// per-neighbour figures compare with calibration_bench's "ns per neighbour"; "builds" is the share of
+// evaluations that built new neighbour lists (the others reuse them), "redo" the share whose density
+// solve found an h beyond its list and ran again.
 //   step_cost_bench [scene=box_random] [key=scene.count] [sizes=5000,20000,80000,160000] [steps=10]
 //                   [threads=1] [KEY=VALUE ...]
 // Extra KEY=VALUE arguments are parameter overrides (e.g. kernel.type=gaussian kernel.eta=1.2).
@@ -47,8 +49,8 @@ int main(int argc, char** argv) {
   const int threads = argc > 5 ? std::stoi(argv[5]) : 1;
   omp_set_num_threads(threads);
   std::printf("%s, %d thread(s), %d timed steps after 2 warm-up steps\n", scene.c_str(), threads, steps);
-  std::printf("%9s %10s %8s %8s %8s %6s %9s %9s  per part: ns per list entry\n", "N", "ns/p-step", "list/p",
-              "nbrs/p", "bytes/p", "h-its", "rho ns/nb", "f ns/nb");
+  std::printf("%9s %10s %8s %8s %8s %6s %9s %9s %7s %6s  per part: ns per list entry\n", "N", "ns/p-step",
+              "list/p", "nbrs/p", "bytes/p", "h-its", "rho ns/nb", "f ns/nb", "builds", "redo");
   for (const std::string& value : sizes) {
     const double rss0 = rss_bytes();
     sph::RunConfig cfg = sph::RunConfig::from_scene(scene);
@@ -62,7 +64,7 @@ int main(int argc, char** argv) {
     sph::World w(cfg);
     for (int s = 0; s < 2; ++s) w.step();
     const std::vector<sph::StageTiming> before = w.timings();
-    const std::int64_t evals0 = w.evaluations();
+    const std::int64_t evals0 = w.evaluations(), builds0 = w.list_builds(), over0 = w.h_overflows();
     const auto t0 = std::chrono::steady_clock::now();
     for (int s = 0; s < steps; ++s) w.step();
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -78,8 +80,10 @@ int main(int argc, char** argv) {
       if (after[k].name.rfind("density", 0) == 0) rho_ns = 1e9 * sec / (evals * n * nb * its);
       if (after[k].name.rfind("forces", 0) == 0) force_ns = 1e9 * sec / (evals * n * nb);
     }
-    std::printf("%9.0f %10.1f %8.1f %8.1f %8.0f %6.2f %9.2f %9.2f ", n, 1e9 * wall / (n * steps), pairs / n, nb,
-                (rss_bytes() - rss0) / n, ds.mean_iterations, rho_ns, force_ns);
+    std::printf("%9.0f %10.1f %8.1f %8.1f %8.0f %6.2f %9.2f %9.2f %7.2f %6.3f ", n, 1e9 * wall / (n * steps), pairs / n,
+                nb, (rss_bytes() - rss0) / n, ds.mean_iterations, rho_ns, force_ns,
+                static_cast<double>(w.list_builds() - builds0) / evals,
+                static_cast<double>(w.h_overflows() - over0) / evals);
     for (std::size_t k = 0; k < after.size() && k < before.size(); ++k) {
       const double sec = after[k].seconds - before[k].seconds;
       std::printf(" %s %.1f;", after[k].name.c_str(), 1e9 * sec / (pairs * evals));

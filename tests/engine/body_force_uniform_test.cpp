@@ -99,7 +99,7 @@ TEST(BodyForceUniform, FreeFallConservesEnergyWithLeapfrog) {
   s.dim = 3;
   s.n = n;
   for (int k = 0; k < 3; ++k) { s.x[k] = &p.x[k]; s.v[k] = &p.v[k]; s.a[k] = &p.a[k]; }
-  const Evaluate eval = [&] {
+  const Evaluate eval = [&](double) {
     for (int k = 0; k < 3; ++k) std::fill(p.a[k].begin(), p.a[k].end(), 0.0);
     b.run(*stage);
   };

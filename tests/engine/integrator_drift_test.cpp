@@ -59,7 +59,7 @@ struct System {
 /// Runs `steps` steps of dt.
 void run(System& sys, IntegratorType type, double dt, int steps) {
   auto integ = make_integrator(type);
-  const Evaluate eval = [&] { sys.eval(); };
+  const Evaluate eval = [&](double) { sys.eval(); };
   bool current = false;
   for (int k = 0; k < steps; ++k) current = integ->step(sys.s, eval, dt, current);
 }

@@ -69,7 +69,7 @@ RunError run(IntegratorType type, double b, double dt, double T, bool energy) {
   Oscillator o(energy);
   o.b = b;
   auto integ = make_integrator(type);
-  const Evaluate eval = [&] { o.eval(); };
+  const Evaluate eval = [&](double) { o.eval(); };
   const int steps = static_cast<int>(std::lround(T / dt));
   bool current = false;
   RunError e;
@@ -136,7 +136,7 @@ TEST_F(Integrators, Rk4ReproducesSeedValidation) {
   // Four evaluations per step (no reuse across steps with current = false from RK4).
   Oscillator o(false);
   auto integ = make_integrator(IntegratorType::RK4);
-  const Evaluate eval = [&] { o.eval(); };
+  const Evaluate eval = [&](double) { o.eval(); };
   bool current = false;
   for (int n = 0; n < 10; ++n) current = integ->step(o.s, eval, 0.05, current);
   EXPECT_EQ(o.evaluations, 40);
@@ -160,7 +160,7 @@ TEST_F(Integrators, LeapfrogEnergyBoundedOverThousandPeriods) {
   const double w = std::sqrt(o.k / o.m), period = 2 * std::numbers::pi / w, dt = 0.05;  // omega dt = 0.158
   const int steps = static_cast<int>(1000 * period / dt);
   auto integ = make_integrator(IntegratorType::Leapfrog);
-  const Evaluate eval = [&] { o.eval(); };
+  const Evaluate eval = [&](double) { o.eval(); };
   const double E0 = energy(o);
   double first = 0.0, last = 0.0;  // max |dE/E| over the first and the last 10 periods
   const int window = static_cast<int>(10 * period / dt);
@@ -189,7 +189,7 @@ TEST_F(Integrators, EulerEnergyGrowsGeometrically) {
   o.b = 0.0;
   const double dt = 0.05, w2 = o.k / o.m;
   auto integ = make_integrator(IntegratorType::Euler);
-  const Evaluate eval = [&] { o.eval(); };
+  const Evaluate eval = [&](double) { o.eval(); };
   const double E0 = energy(o);
   const int steps = 800;  // ~20 periods
   bool current = false;
@@ -206,7 +206,7 @@ TEST_F(Integrators, EulerEnergyGrowsGeometrically) {
   Oscillator q(false);
   q.b = 0.0;
   auto lf = make_integrator(IntegratorType::Leapfrog);
-  const Evaluate evq = [&] { q.eval(); };
+  const Evaluate evq = [&](double) { q.eval(); };
   current = false;
   for (int n = 1; n <= steps; ++n) current = lf->step(q.s, evq, dt, current);
   EXPECT_LT(std::fabs(energy(q) / E0 - 1.0), 0.25 * w2 * dt * dt * 1.05);

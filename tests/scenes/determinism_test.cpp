@@ -15,6 +15,7 @@ std::uint64_t run_hash(const std::string& scene, const std::string& key, const s
   RunConfig cfg = RunConfig::from_scene(scene);
   cfg.set(key, value, "determinism_test");
   World w(cfg);
+  w.set_adaptive_threads(false);  // every step on `threads` threads (not the faster team of World::step)
   for (int s = 0; s < steps; ++s) w.step();
   return test::state_hash(w.particles());
 }

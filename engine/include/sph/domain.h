@@ -24,6 +24,10 @@ struct Domain {
 /// copy_ghost_velocity and copy_ghost_field. Deterministic: ghosts are appended axis by axis in particle order.
 void make_ghosts(const Domain& d, double margin, Particles& p);
 
+/// Moves every ghost with its source (the transform make_ghosts recorded): the ghosts of lists kept
+/// between evaluations. Gives the positions make_ghosts would give for the same sources, bit for bit.
+void update_ghost_positions(Particles& p);
+
 /// Copy velocity (mirrored across walls) and fields from each ghost's source. Vector and tensor
 /// components change sign as their FieldInfo::flip_axes say (a mirror reverses the normal component).
 void copy_ghost_velocity(Particles& p);

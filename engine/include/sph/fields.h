@@ -31,6 +31,7 @@ enum class Field : std::uint8_t {
   VelGradXX, VelGradXY, VelGradXZ, VelGradYX, VelGradYY, VelGradYZ, VelGradZX, VelGradZY, VelGradZZ,  ///< dv_k/dx_l (seed 001 eq. 52) [1/time]
   Potential,   ///< gravitational potential phi at the particle [length^2/time^2]
   RestX,       ///< the FPM point's place in the initial set Gamma_0 (seed 002 Note 3.2) [length]
+  HRate,       ///< dh/dt = -h/(d rho) drho/dt of a summation density (seed 000 eqs. 3.3.2, 3.5.1) [length/time]
   Count
 };
 
@@ -125,6 +126,7 @@ constexpr std::array<FieldInfo, kFieldCount> kFieldInfo{{
     {"dvzdz", "dv_z/dz", field_detail::tx(2, 2), false, false},
     {"phi", "gravitational potential phi", 0, true, true},
     {"x0", "initial point x0 (Gamma_0)", 0, false, false},
+    {"dhdt", "dh/dt", 0, false, false},
 }};
 
 inline const FieldInfo& info(Field f) { return kFieldInfo[index(f)]; }

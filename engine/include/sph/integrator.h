@@ -30,8 +30,9 @@ struct PhaseSpace {
   bool drifts() const { return drift[0] != nullptr; }
 };
 
-/// Recomputes a, the drift and the evolved rates from the current state.
-using Evaluate = std::function<void()>;
+/// Recomputes a, the drift and the evolved rates from the current state, which the integrator has put
+/// at `offset` [time] after the start of the step (0 for the state it started from).
+using Evaluate = std::function<void(double offset)>;
 
 class Integrator {
  public:

@@ -55,6 +55,8 @@ class Particles {
   std::vector<std::uint8_t> kind;        ///< Kind of every particle (ghosts: of the source)
   std::vector<std::uint32_t> ghost_src;  ///< for ghost g (index n+g): its real source particle
   std::vector<std::uint8_t> ghost_flip;  ///< for ghost g: bit k set = mirrored across an axis-k wall
+  /// for ghost g: x_g[k] = (flipped on k ? -x_src[k] : x_src[k]) + ghost_offset[k][g] [length]
+  std::array<std::vector<double>, 3> ghost_offset;
 
  private:
   int dim_ = 1;

@@ -20,6 +20,7 @@
 namespace sph {
 
 class Pipeline;
+class TeamChooser;
 struct EvalStats;
 struct StageContext;
 
@@ -59,8 +60,14 @@ class World {
   const RunConfig& config() const { return cfg_; }
   const SceneSpec& scene() const { return *cfg_.scene; }
 
-  /// One step of the adaptive (or fixed) dt, shortened to at most dt_max. Throws DivergedError.
+  /// One step of the adaptive (or fixed) dt, shortened to at most dt_max. Throws DivergedError. Runs on
+  /// a team of at most the caller's OpenMP thread count: by default the faster of one thread and the
+  /// full team, measured every few hundred steps (core/team_size.h); results are the same either way.
   void step(double dt_max = 1e300);
+  /// Off: every step uses the caller's full OpenMP team (tests comparing thread counts).
+  void set_adaptive_threads(bool on) { adaptive_threads_ = on; }
+  /// The team the last step ran on.
+  int last_team() const { return last_team_; }
   /// Steps until time t (the last step is shortened to land on t exactly).
   void advance_to(double t);
   /// The timestep the next step would take (from the last force evaluation).
@@ -87,6 +94,13 @@ class World {
   const std::vector<StageTiming>& timings() const { return timings_; }
   /// Candidate pairs in the current neighbour lists (self included).
   std::size_t neighbour_pairs() const;
+  /// Neighbour-list builds since the world was made (the lists are kept between evaluations while
+  /// they fit: see World::prepare_neighbours).
+  std::int64_t list_builds() const { return list_builds_; }
+  /// Off: new neighbour lists at every evaluation (tests comparing against the kept lists).
+  void set_list_reuse(bool on) { reuse_lists_ = on; }
+  /// Evaluations whose density solve found an h beyond its list and ran again on new lists.
+  std::int64_t h_overflows() const { return h_overflows_; }
 
   Diagnostics diagnostics() const;
   bool has_reference() const { return reference_ != nullptr; }
@@ -106,12 +120,22 @@ class World {
   const std::vector<RunWarning>& warnings() const { return warnings_; }
 
   /// Evaluate the stages for the current state (done automatically by step()).
-  void evaluate();
+  void evaluate() { evaluate(t_); }
 
  private:
   StageContext context() const;
-  /// Ghosts and neighbour lists for the current state (the start of every evaluation).
+  /// Evaluates the state an integrator put at time t_eval (within the step).
+  void evaluate(double t_eval);
+  /// Ghosts and neighbour lists for the current state (the start of every evaluation): the lists of
+  /// an earlier evaluation while they fit, else new ones.
   void prepare_neighbours();
+  /// No particle has moved more than half the lists' skin since they were built, and no h outgrew
+  /// its list (world_lists.cpp).
+  bool lists_fit() const;
+  /// Moves the periodic coordinates wrapped since the build back to the build's image (unwrapped_).
+  void unwrap();
+  /// Restores the coordinates unwrap() moved.
+  void rewrap();
   /// Stage actions due after a completed step (e.g. density re-initialisation).
   void after_step();
   void reset_timings();
@@ -134,6 +158,7 @@ class World {
   /// The id of the particle with the largest acceleration (lowest index among equals).
   std::int64_t fastest_particle() const;
   PhaseSpace phase_space();
+  void advance(double dt_max);  ///< the step itself (step() chooses its team)
 
   RunConfig cfg_;
   Kernel kernel_;
@@ -150,10 +175,23 @@ class World {
   std::vector<double> h_limit_;
   std::vector<StageTiming> timings_;
   std::vector<std::uint32_t> by_id_;
-  NeighbourList wide_;                       ///< Verlet lists (fixed h, no ghosts), nl_ is filtered from them
-  bool lists_valid_ = false;                 ///< wide_ may be reused
-  std::array<std::vector<double>, 3> x_built_;  ///< positions when the lists were built
-  double verlet_margin_ = 0.0;               ///< twice the displacement the lists tolerate [length]
+  NeighbourList exact_;                      ///< nl_ filtered to the support, for stages that ask for it
+  bool lists_valid_ = false;                 ///< nl_ may be reused (while lists_fit())
+  bool reuse_lists_ = true;                  ///< set_list_reuse
+  std::array<std::vector<double>, 3> x_built_;  ///< real particles' positions when the lists were built
+  std::vector<double> reach_h_;              ///< h_limit of every particle and ghost (the build's scratch)
+  /// A periodic coordinate wrapped since the lists were built, moved back to its image of the build for
+  /// the stages and restored after them (x is its wrapped value).
+  struct Unwrapped {
+    std::uint32_t i;
+    int axis;
+    double x;
+  };
+  std::vector<Unwrapped> unwrapped_;
+  std::int64_t list_builds_ = 0;             ///< neighbour-list builds so far
+  std::int64_t h_overflows_ = 0;             ///< evaluations run again because an h outgrew its list
+  double t_last_eval_ = -1.0;  ///< time of the last evaluation (< 0: none under the current parameters)
+  double since_ = 0.0;         ///< time from the last evaluation to the current one (0 when unknown)
   double t_ = 0.0, dt_last_ = 0.0;
   double dt_first_ = 0.0;     ///< the first adaptive dt (a collapse far below it is a blow-up)
   double energy_scale_ = -1.0, energy0_ = 0.0;  ///< |E_kin| + |E_int| + |E_pot| and E_tot after step 1
@@ -161,6 +199,9 @@ class World {
   WallCrossings crossings_;                     ///< since the last check_walls()
   std::vector<RunWarning> warnings_;
   std::int64_t step_ = 0, evaluations_ = 0;
+  std::unique_ptr<TeamChooser> team_;
+  bool adaptive_threads_ = true;
+  int last_team_ = 1;
   bool current_ = false;      ///< rates belong to the current state
   bool rates_known_ = false;  ///< signal speeds from some evaluation under the current params (for dt)
 };

@@ -40,6 +40,7 @@ void Particles::resize_total(std::size_t total) {
   kind.resize(total, static_cast<std::uint8_t>(Kind::Fluid));
   ghost_src.resize(total > n_ ? total - n_ : 0, 0);
   ghost_flip.resize(ghost_src.size(), 0);
+  for (auto& o : ghost_offset) o.resize(ghost_src.size(), 0.0);
   for (std::size_t f = 0; f < kFieldCount; ++f)
     if (fields_.has(static_cast<Field>(f))) scalar_[f].resize(total, 0.0);
 }

@@ -48,6 +48,7 @@ Pipeline::Pipeline(const Physics& ph, int dim) {
     }
     sets_a_ = sets_a_ || s->sets_acceleration();
     uses_neighbours_ = uses_neighbours_ || s->uses_neighbours();
+    exact_lists_ = exact_lists_ || s->exact_lists();
   }
   drifts_ = ph.xsph == Toggle::On || ph.fpm == FpmType::BurgersUpwind;
 }

@@ -22,12 +22,14 @@ class Pipeline {
   bool drifts() const { return drifts_; }
   /// Some stage reads the neighbour lists.
   bool uses_neighbours() const { return uses_neighbours_; }
+  /// Some stage reads every entry of its lists without testing the distance (Stage::exact_lists).
+  bool exact_lists() const { return exact_lists_; }
 
  private:
   std::vector<std::unique_ptr<Stage>> stages_;
   FieldSet fields_;
   std::vector<EvolvedPair> evolved_;
-  bool sets_a_ = false, drifts_ = false, uses_neighbours_ = false;
+  bool sets_a_ = false, drifts_ = false, uses_neighbours_ = false, exact_lists_ = false;
 };
 
 }  // namespace sph

@@ -33,12 +33,15 @@ struct StageContext {
   const Kernel& kernel;
   const Domain& domain;
   Particles& p;
+  /// Every j within support max(h_i, h_j) of each real i, in a fixed order; with pairs beyond that too
+  /// (up to the lists' skin) unless the stage asks for exact_lists().
   const NeighbourList& nl;
   const std::vector<double>& h_limit;  ///< the largest h each particle's list covers [length]
   double eta;                          ///< effective eta of h = eta (m/rho)^(1/d)
   double spacing;                      ///< the scene's initial particle spacing [length]
   double wall_strength;                ///< the scene's Lennard-Jones D [length^2/time^2]
   EvalStats& stats;
+  double since = 0.0;                  ///< time since the last evaluation [time]; 0 when unknown
   /// Wall particles take part in the SPH sums (dummy walls) or only exert their own force (Lennard-Jones).
   bool walls_in_sums() const { return prm.physics.walls == WallType::Dummy; }
 };
@@ -62,6 +65,11 @@ class Stage {
   /// False if the stage never reads the neighbour lists (self-gravity, a body force): a pipeline of
   /// such stages only builds no lists.
   virtual bool uses_neighbours() const { return true; }
+  /// True if the stage uses every entry of its lists as a neighbour. Lists are kept between
+  /// evaluations with a skin (Verlet lists): they hold pairs somewhat beyond the support, which the
+  /// stages that test the distance (all the SPH loops) skip; a stage that does not gets lists filtered
+  /// to the pairs within the support at every evaluation.
+  virtual bool exact_lists() const { return false; }
   /// True if the stage sets the accelerations (the first force stage); later stages add to them.
   virtual bool sets_acceleration() const { return false; }
   /// Computes. Returns false if a particle's h outgrew its neighbour list: the world rebuilds the list

@@ -6,7 +6,7 @@ namespace sph {
 class EulerIntegrator final : public Integrator {
  public:
   bool step(PhaseSpace& s, const Evaluate& eval, double dt, bool current) override {
-    if (!current) eval();
+    if (!current) eval(0.0);
     for (int k = 0; k < s.dim; ++k) {
       detail::drift(s, k, *s.x[k], *s.x[k], dt, *s.v[k]);
       detail::axpy(*s.v[k], *s.v[k], dt, *s.a[k], s.n);

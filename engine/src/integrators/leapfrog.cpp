@@ -9,7 +9,7 @@ namespace sph {
 class LeapfrogIntegrator final : public Integrator {
  public:
   bool step(PhaseSpace& s, const Evaluate& eval, double dt, bool current) override {
-    if (!current) eval();
+    if (!current) eval(0.0);
     const std::size_t n = s.n;
     const double half = 0.5 * dt;
     for (int k = 0; k < s.dim; ++k) {
@@ -25,7 +25,7 @@ class LeapfrogIntegrator final : public Integrator {
       detail::copy(yhalf_[e], *ev.y, n);
       detail::axpy(*ev.y, yhalf_[e], half, *ev.rate, n);
     }
-    eval();
+    eval(dt);
     for (int k = 0; k < s.dim; ++k) detail::axpy(*s.v[k], vhalf_[k], half, *s.a[k], n);  // kick
     for (std::size_t e = 0; e < s.evolved.size(); ++e)
       detail::axpy(*s.evolved[e].y, yhalf_[e], half, *s.evolved[e].rate, n);

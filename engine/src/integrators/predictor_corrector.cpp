@@ -13,7 +13,7 @@ class PredictorCorrector final : public Integrator {
   bool step(PhaseSpace& s, const Evaluate& eval, double dt, bool current) override {
     const std::size_t n = s.n;
     if (!have_rates_ || rate_n_ != n || rates_.size() != s.evolved.size()) {  // first step: current rates
-      if (!current) eval();
+      if (!current) eval(0.0);
       store_rates(s);
     }
     detail::save(s, y0_);
@@ -24,7 +24,7 @@ class PredictorCorrector final : public Integrator {
       else detail::axpy(*s.x[k], y0_.x[k], half, y0_.v[k], n);
     }
     for (std::size_t e = 0; e < s.evolved.size(); ++e) detail::axpy(*s.evolved[e].y, y0_.y[e], half, rates_[e], n);
-    eval();
+    eval(half);
     store_rates(s);
     for (int k = 0; k < s.dim; ++k) {
       detail::axpy(*s.v[k], y0_.v[k], half, a_[k], n);  // eq. 58

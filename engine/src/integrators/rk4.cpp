@@ -17,7 +17,7 @@ class RK4Integrator final : public Integrator {
     const double b[4] = {1.0 / 6.0, 1.0 / 3.0, 1.0 / 3.0, 1.0 / 6.0};
     const double c[4] = {0.0, 0.5, 0.5, 1.0};
     for (int stage = 0; stage < 4; ++stage) {
-      if (stage > 0 || !current) eval();
+      if (stage > 0 || !current) eval(c[stage] * dt);
       // accumulate this stage's slopes: k_x = v (+ drift), k_v = a, k_y = rate
       for (int k = 0; k < s.dim; ++k) {
         auto &kx = kx_[k], &kv = kv_[k];

@@ -127,7 +127,7 @@ std::size_t gather_neighbours(const Grid& g, const Particles& p, const std::vect
         if (g0 * g0 + g1 * g1 + g2 * g2 >= reach * reach) continue;  // nobody in this cell is in range
         const std::uint32_t b = start[cell], e = start[cell + 1];
         if (used + (e - b) > out.size()) {  // rare: room for the whole cell
-          out.resize(2 * (used + (e - b)));
+          out.resize(used + (e - b) + out.size() / 4);
           buf = out.data();
         }
         for (std::uint32_t s = b; s < e; ++s) {
@@ -146,7 +146,6 @@ std::size_t gather_neighbours(const Grid& g, const Particles& p, const std::vect
 
 struct NeighbourWorkspace {
   Grid grid;
-  std::vector<std::vector<std::uint32_t>> buffers;  ///< one per thread
   std::vector<std::size_t> base;
 };
 
@@ -155,25 +154,34 @@ void build_neighbours(const Particles& p, const std::vector<double>& h, double r
   if (!out.work) out.work = std::make_shared<NeighbourWorkspace>();
   Grid& g = out.work->grid;
   build_grid(p, h, radius, g);
-  // One pass: each thread gathers the lists of a contiguous block of particles into its own buffer;
-  // the buffers are then concatenated in block order, so the result is the same for any thread count.
+  // One pass: each thread gathers the lists of a contiguous block of particles; the blocks are then
+  // concatenated in block order, so the result is the same for any thread count. One thread gathers
+  // straight into the list. With a team, each thread fills a buffer of its own stack (the vector objects
+  // of a shared array would share a cache line: false sharing) that is freed once copied, so between
+  // builds only the list itself is kept.
   out.offset.assign(n + 1, 0);
-  auto& buffers = out.work->buffers;
   auto& base = out.work->base;
-#pragma omp parallel if (n >= kParallelMin)
+  if (!(n >= kParallelMin && omp_get_max_threads() > 1)) {
+    std::vector<std::uint32_t>& list = out.index;
+    list.resize(std::max<std::size_t>(list.capacity(), 1024));  // kept from the last build: no new pages
+    std::size_t used = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      out.offset[i] = static_cast<std::uint32_t>(used);
+      used = gather_neighbours(g, p, h, radius, i, list, used);
+    }
+    list.resize(used);
+    out.offset[n] = static_cast<std::uint32_t>(used);
+    return;
+  }
+#pragma omp parallel
   {
     const int T = omp_get_num_threads(), t = omp_get_thread_num();
 #pragma omp single
-    {
-      if (buffers.size() < static_cast<std::size_t>(T)) buffers.resize(T);
-      base.assign(T + 1, 0);
-    }
+    base.assign(T + 1, 0);
     const std::size_t b = n * t / T, e = n * (t + 1) / T;
-    // Work on a vector object of this thread's own stack: the vector objects in `buffers` share a cache
-    // line, and updating their end pointers from two cores would serialise the loop (false sharing).
-    std::vector<std::uint32_t> local;
-    local.swap(buffers[t]);
-    if (local.size() < 1024) local.resize(1024);  // its size is the capacity; kept from the last build
+    // room for the block at the mean list length of the last build (grown if needed)
+    const double mean = n > 0 && !out.index.empty() ? static_cast<double>(out.index.size()) / n : 32.0;
+    std::vector<std::uint32_t> local(static_cast<std::size_t>(1.25 * mean * (e - b)) + 1024);
     std::size_t used = 0;
     for (std::size_t i = b; i < e; ++i) {
       out.offset[i] = static_cast<std::uint32_t>(used);  // relative to the block for now
@@ -190,7 +198,6 @@ void build_neighbours(const Particles& p, const std::vector<double>& h, double r
     std::copy(local.begin(), local.begin() + static_cast<std::ptrdiff_t>(used),
               out.index.begin() + static_cast<std::ptrdiff_t>(base[t]));
     for (std::size_t i = b; i < e; ++i) out.offset[i] += static_cast<std::uint32_t>(base[t]);
-    local.swap(buffers[t]);  // keep the capacity for the next build
   }
 }
 

@@ -14,6 +14,7 @@ struct Ghost {
   std::array<double, 3> x;
   std::uint32_t src;
   std::uint8_t flip;
+  std::array<double, 3> offset;  ///< x[k] = (flipped on k ? -x_src[k] : x_src[k]) + offset[k]
 };
 
 }  // namespace
@@ -24,7 +25,7 @@ void make_ghosts(const Domain& d, double margin, Particles& p) {
   // Each axis sees the real particles and the ghosts made for the previous axes (this fills corners).
   auto visit = [&](std::size_t count, auto&& fn) {
     for (std::size_t j = 0; j < count; ++j) {
-      if (j < n) fn(Ghost{{p.x[0][j], p.x[1][j], p.x[2][j]}, static_cast<std::uint32_t>(j), 0});
+      if (j < n) fn(Ghost{{p.x[0][j], p.x[1][j], p.x[2][j]}, static_cast<std::uint32_t>(j), 0, {0.0, 0.0, 0.0}});
       else fn(g[j - n]);
     }
   };
@@ -36,16 +37,16 @@ void make_ghosts(const Domain& d, double margin, Particles& p) {
       visit(count, [&](Ghost s) {
         const double xk = s.x[k];
         for (int m = 1; m <= images; ++m) {
-          if (xk + m * L < hi + margin) { Ghost c = s; c.x[k] = xk + m * L; g.push_back(c); }
-          if (xk - m * L > lo - margin) { Ghost c = s; c.x[k] = xk - m * L; g.push_back(c); }
+          if (xk + m * L < hi + margin) { Ghost c = s; c.offset[k] = m * L; c.x[k] = xk + c.offset[k]; g.push_back(c); }
+          if (xk - m * L > lo - margin) { Ghost c = s; c.offset[k] = -(m * L); c.x[k] = xk + c.offset[k]; g.push_back(c); }
         }
       });
     } else if (d.bc[k] == Boundary::Wall) {
       const std::uint8_t bit = static_cast<std::uint8_t>(1u << k);
       visit(count, [&](Ghost s) {
         const double xk = s.x[k];
-        if (xk - lo < margin) { Ghost c = s; c.x[k] = 2.0 * lo - xk; c.flip ^= bit; g.push_back(c); }
-        if (hi - xk < margin) { Ghost c = s; c.x[k] = 2.0 * hi - xk; c.flip ^= bit; g.push_back(c); }
+        if (xk - lo < margin) { Ghost c = s; c.offset[k] = 2.0 * lo; c.x[k] = -xk + c.offset[k]; c.flip ^= bit; g.push_back(c); }
+        if (hi - xk < margin) { Ghost c = s; c.offset[k] = 2.0 * hi; c.x[k] = -xk + c.offset[k]; c.flip ^= bit; g.push_back(c); }
       });
     }
   }
@@ -54,8 +55,23 @@ void make_ghosts(const Domain& d, double margin, Particles& p) {
     for (int k = 0; k < 3; ++k) p.x[k][n + i] = g[i].x[k];
     p.ghost_src[i] = g[i].src;
     p.ghost_flip[i] = g[i].flip;
+    for (int k = 0; k < 3; ++k) p.ghost_offset[k][i] = g[i].offset[k];
     p.id[n + i] = p.id[g[i].src];
     p.kind[n + i] = p.kind[g[i].src];
+  }
+}
+
+void update_ghost_positions(Particles& p) {
+  const std::size_t n = p.size(), G = p.ghost_src.size();
+  for (int k = 0; k < p.dim(); ++k) {
+    double* x = p.x[k].data();
+    const double* off = p.ghost_offset[k].data();
+    const std::uint8_t bit = static_cast<std::uint8_t>(1u << k);
+#pragma omp parallel for schedule(static) if (G >= kParallelMin)
+    for (std::size_t g = 0; g < G; ++g) {
+      const double xs = x[p.ghost_src[g]];
+      x[n + g] = (p.ghost_flip[g] & bit ? -xs : xs) + off[g];
+    }
   }
 }
 

@@ -16,14 +16,19 @@ namespace {
 struct Sums {
   double rho = 0.0;   ///< sum_b w_b W(r_ab, h), w_b = m_b (mass) or m_a (volume)
   double drho = 0.0;  ///< sum_b w_b dW(r_ab, h)/dh
-  int neighbours = 0; ///< count of b with r_ab < support h
 };
 
 /// The pairs of one particle that the h solve can reach (r < support h_limit), gathered once: the Newton
-/// iterations then sweep two short contiguous arrays instead of the neighbour list and the positions.
+/// iterations then sweep short contiguous arrays instead of the neighbour list and the positions.
 struct Candidates {
-  std::vector<double> r2, w;  ///< squared distance [length^2] and weight w_b [mass]
+  std::vector<double> r, w;   ///< distance [length] (squared while gathering) and weight w_b [mass]
+  std::vector<double> tw, td;  ///< per-candidate terms of the two sums (scratch)
   std::size_t n = 0;
+  void fit(std::size_t m) {
+    if (r.size() >= m) return;
+    const std::size_t cap = std::max<std::size_t>(2 * m, 64);
+    r.resize(cap); w.resize(cap); tw.resize(cap); td.resize(cap);
+  }
 };
 
 /// Volume: rho_a = m_a sum_b W_ab (every neighbour weighs m_a). SkipWalls: Lennard-Jones wall
@@ -31,40 +36,60 @@ struct Candidates {
 template <bool Volume, bool SkipWalls>
 void gather(const Particles& p, std::size_t i, std::span<const std::uint32_t> nb, const std::vector<double>& m,
             double reach2, Candidates& c) {
-  if (c.r2.size() < nb.size()) { c.r2.resize(nb.size()); c.w.resize(nb.size()); }
+  c.fit(nb.size());
   const double xi = p.x[0][i], yi = p.x[1][i], zi = p.x[2][i];
   std::size_t n = 0;
   for (std::uint32_t j : nb) {
     if constexpr (SkipWalls) if (p.kind[j]) continue;
     const double dx = xi - p.x[0][j], dy = yi - p.x[1][j], dz = zi - p.x[2][j];
     const double r2 = dx * dx + dy * dy + dz * dz;
-    c.r2[n] = r2;
+    c.r[n] = r2;
     c.w[n] = Volume ? m[i] : m[j];
     n += r2 < reach2 ? 1 : 0;  // keeps the entry only inside the reach (no branch)
   }
   c.n = n;
+  double* r = c.r.data();
+#pragma omp simd
+  for (std::size_t k = 0; k < n; ++k) r[k] = std::sqrt(r[k]);  // once, not at every Newton iteration
+}
+
+/// Neighbours inside the support of h (the stage's neighbour count).
+template <class Shape>
+int count_within(const Candidates& c, double h) {
+  const double R = Shape::support * h;
+  int count = 0;
+  for (std::size_t k = 0; k < c.n; ++k) count += c.r[k] < R ? 1 : 0;
+  return count;
 }
 
 /// The sums at smoothing length h (seed 000 eqs. 3.2.17, 3.3.2): with q = r/h, W = sigma w(q)/h^d and
-/// dW/dh = -sigma (d w(q) + q w'(q))/h^(d+1), so one evaluation of the shape gives both. One running
-/// sum in list order: with the clamped shapes this is branch-free, and on this scalar (SSE2) target it
-/// measured faster than 2 or 4 interleaved partial sums.
+/// dW/dh = -sigma (d w(q) + q w'(q))/h^(d+1), so one evaluation of the shape gives both. The terms are
+/// computed in a loop without reductions (vectorised), then summed in list order: the same sums, bit for
+/// bit, as one running sum over the candidates.
 template <class Shape>
-Sums sums_at(const Shape& shape, double sigma, int d, const Candidates& c, double h) {
-  const double hinv = 1.0 / h, hinv2 = hinv * hinv, S2 = Shape::support * Shape::support;
+Sums sums_at(const Shape& shape, double sigma, int d, Candidates& c, double h) {
+  const double hinv = 1.0 / h;
   const double dd = d;
-  double sw = 0.0, sd = 0.0, count = 0.0;  // a double count keeps the loop in SSE registers
-  for (std::size_t k = 0; k < c.n; ++k) {
-    const double q2 = c.r2[k] * hinv2;
-    const double q = std::sqrt(q2);
+  const std::size_t n = c.n;
+  const double* R = c.r.data();
+  const double* CW = c.w.data();
+  double* TW = c.tw.data();
+  double* TD = c.td.data();
+#pragma omp simd
+  for (std::size_t k = 0; k < n; ++k) {
+    const double q = R[k] * hinv;
     const double w = shape.w(q), dw = shape.dw(q);  // 0 beyond the support
-    sw += c.w[k] * w;
-    sd += c.w[k] * (dd * w + q * dw);
-    count += q2 < S2 ? 1.0 : 0.0;
+    TW[k] = CW[k] * w;
+    TD[k] = CW[k] * (dd * w + q * dw);
+  }
+  double sw = 0.0, sd = 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    sw += TW[k];
+    sd += TD[k];
   }
   double hd = hinv;
   for (int k = 1; k < d; ++k) hd *= hinv;
-  return Sums{sigma * hd * sw, -sigma * hd * hinv * sd, static_cast<int>(count)};
+  return Sums{sigma * hd * sw, -sigma * hd * hinv * sd};
 }
 
 class DensitySummation final : public Stage {
@@ -103,6 +128,10 @@ class DensitySummation final : public Stage {
     const double tol = c.prm.h.tol;
     const int max_iter = c.prm.h.max_iter;
     const auto& h_limit = c.h_limit;
+    // the first guess of the solve: h + dh/dt times the time since the last one (the rate of the last
+    // force evaluation), inside [h/2, h_limit]
+    const double* hdot = !fixed && c.since > 0.0 && p.has(Field::HRate) ? p[Field::HRate].data() : nullptr;
+    const double since = c.since;
     int overflow = 0;
     std::size_t bisections = 0;
 
@@ -116,6 +145,7 @@ class DensitySummation final : public Stage {
       gather<Volume, SkipWalls>(p, i, c.nl.of(i), m, reach * reach, cand);
       Sums s;
       double hi = h[i];
+      if (hdot) hi = std::clamp(hi + hdot[i] * since, 0.5 * hi, h_limit[i]);
       int it = 0;
       bool converged = true;
       if (fixed) {
@@ -142,7 +172,7 @@ class DensitySummation final : public Stage {
       rho[i] = s.rho;
       // Omega = 1 - (dh/drho) sum m dW/dh with dh/drho = -h/(rho d)  (seed 000 eqs. 3.3.2, 3.3.4)
       omega[i] = fixed ? 1.0 : 1.0 + hi / (d * s.rho) * s.drho;
-      nneigh[i] = s.neighbours;
+      nneigh[i] = count_within<Shape>(cand, hi);
       hiter[i] = it + (converged ? 0.0 : 1000.0);  // > 1000 marks non-converged particles
     }
     }

@@ -15,16 +15,19 @@
 #include "core/stages.h"
 #include "courant.h"
 #include "continuity_output.h"
-#include "pair_filter.h"
+#include "pair_block.h"
 #include "pair_terms.h"
 #include "sph/kernel_shapes.h"
 
 namespace sph {
 namespace {
 
+/// The per-pair columns of the loop's PairBlock.
+enum Column { kFx, kFy, kFz, kVs, kDu, kVh, kCond, kLx, kLy, kLz, kDrho, kDiff, kCount, kColumns };
+
 /// Per-particle factors of the pair loop, kept between evaluations (no reallocation).
 struct Factors {
-  std::vector<double> hinv, dnorm, A;
+  std::vector<double> hinv, dnorm, A, R2;
 };
 
 /// Cont: also the continuity rate drho_a/dt = rho_a sum_b V_b (v*_a - v*_b) . grad W_ab(h_a) with its
@@ -46,6 +49,8 @@ void standard_loop(StageContext& c, const Shape& shape, Factors& fac) {
   auto& vsig = p[Field::SignalSpeed];
   const std::vector<double>* u = Energy ? &p[Field::Energy] : nullptr;
   std::vector<double>* dudt = Energy ? &p[Field::EnergyRate] : nullptr;
+  // dh/dt of a summation density with a Newton-Raphson h: the next solve's first guess (density_summation)
+  double* hrate = GradH && p.has(Field::HRate) ? p[Field::HRate].data() : nullptr;
   const bool conduction = Energy && prm.physics.conduction == Toggle::On;
   const bool skip_walls = prm.physics.walls == WallType::LennardJones;
   const double alpha = prm.visc.alpha, beta = prm.visc.beta, eps = prm.visc.eps, nu = prm.visc.nu;
@@ -67,6 +72,7 @@ void standard_loop(StageContext& c, const Shape& shape, Factors& fac) {
   fac.hinv.resize(total);
   fac.dnorm.resize(total);
   fac.A.resize(total);
+  fac.R2.resize(total);
 #pragma omp parallel for schedule(static) if (p.size() >= kParallelMin)
   for (std::size_t j = 0; j < total; ++j) {
     const double s = 1.0 / h[j];
@@ -75,89 +81,137 @@ void standard_loop(StageContext& c, const Shape& shape, Factors& fac) {
     fac.hinv[j] = s;
     fac.dnorm[j] = K.sigma() * hd;
     fac.A[j] = GradH ? P[j] / ((*omega)[j] * rho[j] * rho[j]) : P[j] / (rho[j] * rho[j]);
+    const double R = support * h[j];
+    fac.R2[j] = R * R;
   }
   const double* hinv = fac.hinv.data();
+  const double* vx = p.v[0].data();
+  const double* vy = p.v[1].data();
+  const double* vz = p.v[2].data();
+  const std::uint8_t* kind = p.kind.data();
   const double* dnorm = fac.dnorm.data();
   const double* pA = fac.A.data();
 
 #pragma omp parallel reduction(+ : sum_nb) if (p.size() >= kParallelMin)
   {
-  std::vector<std::uint32_t> near;  // this thread's interacting neighbours of i
+  PairBlock<kColumns> b;  // this thread's pairs of i
 #pragma omp for schedule(dynamic, 64)
   for (std::size_t i = 0; i < n; ++i) {
-    const double xi = p.x[0][i], yi = p.x[1][i], zi = p.x[2][i];
     const double vxi = p.v[0][i], vyi = p.v[1][i], vzi = p.v[2][i];
-    const double hi = h[i];
-    const double Ai = pA[i];
-    double ax = 0.0, ay = 0.0, az = 0.0, du = 0.0, visc_heat = 0.0, cond = 0.0;
-    double vs = cs[i];
-    double drho = 0.0, diff = 0.0;
-    int count = 1;
-    const std::size_t count_near = interacting(p, h.data(), i, c.nl.of(i), support, skip_walls, near);
-    for (std::size_t k = 0; k < count_near; ++k) {
-      const std::uint32_t j = near[k];
-      const double dx = xi - p.x[0][j], dy = yi - p.x[1][j], dz = zi - p.x[2][j];
-      const double r2 = dx * dx + dy * dy + dz * dz;
+    const double hi = h[i], hinv_i = hinv[i], dnorm_i = dnorm[i];
+    const double Ai = pA[i], rhoi = rho[i], csi = cs[i];
+    const std::size_t np = gather_pairs(p, fac.R2.data(), i, c.nl.of(i), skip_walls, b);
+    const std::uint32_t* J = b.j.data();
+    const double* DX = b.dx.data();
+    const double* DY = b.dy.data();
+    const double* DZ = b.dz.data();
+    const double* R2 = b.r2.data();
+    double* FX = b[kFx]; double* FY = b[kFy]; double* FZ = b[kFz]; double* VS = b[kVs];
+    double* DU = b[kDu]; double* VH = b[kVh]; double* LX = b[kLx]; double* LY = b[kLy]; double* LZ = b[kLz];
+    double* DR = b[kDrho]; double* DF = b[kDiff]; double* CN = b[kCount];
+    // the pair terms, per pair, with no reduction: vectorised
+#pragma omp simd
+    for (std::size_t k = 0; k < np; ++k) {
+      const std::uint32_t j = J[k];
+      const double dx = DX[k], dy = DY[k], dz = DZ[k], r2 = R2[k];
       const double hj = h[j];
       const double r = std::sqrt(r2);
       const double rinv = 1.0 / r;
       // dW/dr = sigma dw/dq (r/h) / h^(d+1); grad W = r_hat dW/dr
-      const double dWi = dnorm[i] * shape.dw(r * hinv[i]), dWj = dnorm[j] * shape.dw(r * hinv[j]);
+      const double dWi = dnorm_i * shape.dw(r * hinv_i), dWj = dnorm[j] * shape.dw(r * hinv[j]);
       const double dWm = 0.5 * (dWi + dWj);
       const double Aj = pA[j];
-      const double dvx = vxi - p.v[0][j], dvy = vyi - p.v[1][j], dvz = vzi - p.v[2][j];
+      const double dvx = vxi - vx[j], dvy = vyi - vy[j], dvz = vzi - vz[j];
       const double vdotr = dvx * dx + dvy * dy + dvz * dz;
       const double w = vdotr * rinv;
-      vs = std::max(vs, pair::signal_speed(cs[i], cs[j], w, alpha_scale, beta_scale));
+      VS[k] = pair::signal_speed(csi, cs[j], w, alpha_scale, beta_scale);
       double Pi = 0.0;
       if constexpr (V == ViscType::Monaghan)
-        Pi = pair::monaghan_pi(vdotr, r2, hi, hj, rho[i], rho[j], cs[i], cs[j], alpha, beta, eps);
+        Pi = pair::monaghan_pi_nb(vdotr, r2, hi, hj, rhoi, rho[j], csi, cs[j], alpha, beta, eps);
       const double f = V == ViscType::Monaghan ? -m[j] * (Ai * dWi + Aj * dWj + Pi * dWm) * rinv
-                                               : -m[j] * (Ai * dWi + Aj * dWj) * rinv;  // times r_vec below
-      ax += f * dx;
-      ay += f * dy;
-      az += f * dz;
+                                               : -m[j] * (Ai * dWi + Aj * dWj) * rinv;  // times r_vec
+      FX[k] = f * dx;
+      FY[k] = f * dy;
+      FZ[k] = f * dz;
+      double lap = 0.0;
       if constexpr (V == ViscType::Laplacian) {
-        const double k = pair::laplacian_factor(m[j], nu, rho[i], rho[j], r * dWm, r2, 0.5 * (hi + hj), eps);
-        ax += k * dvx;
-        ay += k * dvy;
-        az += k * dvz;
+        lap = pair::laplacian_factor(m[j], nu, rhoi, rho[j], r * dWm, r2, 0.5 * (hi + hj), eps);
+        LX[k] = lap * dvx;
+        LY[k] = lap * dvy;
+        LZ[k] = lap * dvz;
       }
       if constexpr (Cont) {
-        if (r2 < support * support * hi * hi) ++count;
+        CN[k] = r2 < support * support * hi * hi ? 1.0 : 0.0;
         double ddx = dvx, ddy = dvy, ddz = dvz;  // v*_a - v*_b
         if (xsph) {
-          const bool fluid_j = !p.kind[j];
+          const bool fluid_j = !kind[j];
           ddx += xs[0][i] - (fluid_j ? xs[0][j] : 0.0);
           ddy += xs[1][i] - (fluid_j ? xs[1][j] : 0.0);
           ddz += xs[2][i] - (fluid_j ? xs[2][j] : 0.0);
         }
         const double Vj = m[j] / rho[j], dW_r = dWi * rinv;
-        drho += Vj * (ddx * dx + ddy * dy + ddz * dz) * dW_r;
-        diff += pair::density_diffusion(Vj, rho[i], rho[j], dW_r);
+        DR[k] = Vj * (ddx * dx + ddy * dy + ddz * dz) * dW_r;
+        DF[k] = pair::density_diffusion(Vj, rhoi, rho[j], dW_r);
       }
-      if constexpr (Energy) {
-        du += m[j] * w * dWi;  // times Ai below (seed 000 eq. 3.3.19)
-        if constexpr (V == ViscType::Monaghan) visc_heat += 0.5 * m[j] * Pi * w * dWm;  // dissipation -> heat
-        if constexpr (V == ViscType::Laplacian) {
-          // the Laplacian term's work -k v_ab . v_ab / 2 per pair share, as heat
-          const double k = pair::laplacian_factor(m[j], nu, rho[i], rho[j], r * dWm, r2, 0.5 * (hi + hj), eps);
-          visc_heat -= 0.5 * k * (dvx * dvx + dvy * dvy + dvz * dvz);
-        }
-        if (conduction && alpha_u > 0.0) {
-          const double rhom = 0.5 * (rho[i] + rho[j]);
-          const double vsu = std::sqrt(std::abs(P[i] - P[j]) / rhom);
-          cond += m[j] * alpha_u * vsu * ((*u)[i] - (*u)[j]) / rhom * dWm;
-        }
+      if constexpr (Energy || GradH) DU[k] = m[j] * w * dWi;  // sum_b m_b v_ab . grad W_ab(h_a)
+      if constexpr (Energy) {  // du/dt = Ai times that sum (seed 000 eq. 3.3.19)
+        if constexpr (V == ViscType::Monaghan) VH[k] = 0.5 * m[j] * Pi * w * dWm;  // dissipation -> heat
+        // the Laplacian term's work -k v_ab . v_ab / 2 per pair share, as heat
+        if constexpr (V == ViscType::Laplacian) VH[k] = 0.5 * lap * (dvx * dvx + dvy * dvy + dvz * dvz);
       }
     }
+    double* CD = b[kCond];
+    if (Energy && conduction && alpha_u > 0.0) {
+      const double Pi_ = P[i], ui = (*u)[i];
+      const double* uu = u->data();
+#pragma omp simd
+      for (std::size_t k = 0; k < np; ++k) {
+        const std::uint32_t j = J[k];
+        const double r = std::sqrt(R2[k]);
+        const double dWm = 0.5 * (dnorm_i * shape.dw(r * hinv_i) + dnorm[j] * shape.dw(r * hinv[j]));
+        const double rhom = 0.5 * (rhoi + rho[j]);
+        const double vsu = std::sqrt(std::abs(Pi_ - P[j]) / rhom);
+        CD[k] = m[j] * alpha_u * vsu * (ui - uu[j]) / rhom * dWm;
+      }
+    }
+    // the sums, in list order
+    double ax = 0.0, ay = 0.0, az = 0.0, du = 0.0, visc_heat = 0.0, cond = 0.0;
+    double vs = csi;
+    double drho = 0.0, diff = 0.0;
+    int count = 1;
+    for (std::size_t k = 0; k < np; ++k) {
+      ax += FX[k];
+      ay += FY[k];
+      az += FZ[k];
+      if constexpr (V == ViscType::Laplacian) {
+        ax += LX[k];
+        ay += LY[k];
+        az += LZ[k];
+      }
+      vs = std::max(vs, VS[k]);
+      if constexpr (Cont) {
+        count += static_cast<int>(CN[k]);
+        drho += DR[k];
+        diff += DF[k];
+      }
+      if constexpr (Energy || GradH) du += DU[k];
+      if constexpr (Energy) {
+        if constexpr (V == ViscType::Monaghan) visc_heat += VH[k];
+        if constexpr (V == ViscType::Laplacian) visc_heat -= VH[k];
+      }
+    }
+    if (Energy && conduction && alpha_u > 0.0)
+      for (std::size_t k = 0; k < np; ++k) cond += CD[k];
     p.a[0][i] = ax;
     p.a[1][i] = ay;
     p.a[2][i] = az;
     vsig[i] = vs;
     if constexpr (Energy) (*dudt)[i] = Ai * du + visc_heat + cond;
+    // drho/dt = (1/Omega) sum_b m_b v_ab . grad W_ab(h_a), and h = eta (m/rho)^(1/d) gives
+    // dh/dt = -h/(d rho) drho/dt (seed 000 eqs. 3.3.2, 3.5.1)
+    if (hrate) hrate[i] = -hi / (d * rhoi) * (du / (*omega)[i]);
     if constexpr (Cont) {
-      cont->store(i, rho[i], hi, drho, diff, count);
+      cont->store(i, rhoi, hi, drho, diff, count);
       sum_nb += count;
     }
   }
@@ -185,7 +239,8 @@ class ForcesStandard final : public Stage {
  public:
   explicit ForcesStandard(const Physics& ph)
       : grad_h_(ph.density == DensityMode::Summation || ph.density == DensityMode::Volume),
-        energy_(ph.energy == Toggle::On), cont_(fuses_continuity(ph)) {}
+        energy_(ph.energy == Toggle::On), cont_(fuses_continuity(ph)),
+        hrate_(ph.density == DensityMode::Summation && ph.smoothing == HMode::Variable) {}
   std::string_view name() const override { return "forces: standard"; }
   FieldSet needs() const override {
     FieldSet f;
@@ -197,6 +252,7 @@ class ForcesStandard final : public Stage {
     FieldSet f;
     f.add(Field::SignalSpeed);
     if (cont_) f.add(Field::DensityRate).add(Field::Neighbours);
+    if (hrate_) f.add(Field::HRate);
     return f;
   }
   bool sets_acceleration() const override { return true; }
@@ -211,7 +267,7 @@ class ForcesStandard final : public Stage {
   double dt_limit(const StageContext& c) const override { return courant_limit(c.p); }
 
  private:
-  bool grad_h_, energy_, cont_;
+  bool grad_h_, energy_, cont_, hrate_;
   Factors factors_;
 };
 

@@ -122,7 +122,9 @@ class FpmBurgers final : public Stage {
     return dt;
   }
 
- bool take_resampled(Particles& out) override {
+  bool exact_lists() const override { return true; }  // the MLS fits take every listed point
+
+  bool take_resampled(Particles& out) override {
     if (!resampled_) return false;
     out = std::move(*resampled_);
     resampled_.reset();

@@ -10,13 +10,19 @@
 
 #include "core/parallel.h"
 #include "core/stages.h"
+#include "pair_block.h"
+#include "sph/kernel_shapes.h"
 
 namespace sph {
 namespace {
 
-template <int D>
-std::size_t correct(StageContext& c, std::vector<double>& vol) {
+/// Columns of the pair terms: S, grad S (D), T2 (D), T1 (D x D, row by row).
+constexpr int columns(int D) { return 1 + 2 * D + D * D; }
+
+template <int D, class Shape>
+std::size_t correct(StageContext& c, const Shape& shape, std::vector<double>& vol) {
   using Mat = Eigen::Matrix<double, D, D>;
+  constexpr int kCols = columns(D);
   const Kernel& K = c.kernel;
   Particles& p = c.p;
   const bool walls_in = c.walls_in_sums();
@@ -24,9 +30,6 @@ std::size_t correct(StageContext& c, std::vector<double>& vol) {
   const double* m = p[Field::Mass].data();
   const double* rho = p[Field::Density].data();
   const double* h = p[Field::H].data();
-  const std::uint8_t* kind = p.kind.data();
-  const double* x[D];
-  for (int k = 0; k < D; ++k) x[k] = p.x[k].data();
   double* S = p[Field::Shepard].data();
   double* fallback = p[Field::CorrFallback].data();
   double* C[D];
@@ -41,38 +44,50 @@ std::size_t correct(StageContext& c, std::vector<double>& vol) {
   vol.resize(p.total());  // V = m / rho of every particle, ghosts included: one division each
 #pragma omp parallel for schedule(static) if (p.size() >= kParallelMin)
   for (std::size_t j = 0; j < vol.size(); ++j) vol[j] = m[j] / rho[j];
-#pragma omp parallel for schedule(dynamic, 64) reduction(+ : fallbacks) if (p.size() >= kParallelMin)
+  const double* V = vol.data();
+#pragma omp parallel reduction(+ : fallbacks) if (p.size() >= kParallelMin)
+  {
+  PairBlock<kCols> b;  // this thread's pairs of i
+#pragma omp for schedule(dynamic, 64)
   for (std::size_t i = 0; i < n; ++i) {
     const double hi = h[i], R2 = support * support * hi * hi;
     const Kernel::Scale si = K.scale(hi);
-    // One pass. With r = x_i - x_j, grad W = r dW/(r dr), grad K0* = (grad W - W grad S / S) / S, so
+    // With r = x_i - x_j, grad W = r dW/(r dr), grad K0* = (grad W - W grad S / S) / S, so
     //   M = sum V grad K0* (x_j - x_i)^T = -T1 / S + grad S T2^T / S^2,
     //   T1 = sum V (dW/(r dr)) r r^T,  T2 = sum V W r,  grad S = sum V (dW/(r dr)) r,  S = sum V W.
-    double s = 0.0, ds[D] = {}, t2[D] = {}, t1[D][D] = {};
-    for (std::uint32_t j : c.nl.of(i)) {
-      if (!walls_in && kind[j]) continue;
-      double r[D], r2 = 0.0;
-      for (int k = 0; k < D; ++k) {
-        r[k] = x[k][i] - x[k][j];
-        r2 += r[k] * r[k];
-      }
-      if (r2 >= R2) continue;
-      const double rr = std::sqrt(r2);
-      double W, dWdr;
-      K.eval(si, rr, W, dWdr);
-      const double V = vol[j];
-      const double VW = V * W, VdW = rr > 0.0 ? V * dWdr / rr : 0.0;
-      s += VW;
-      for (int k = 0; k < D; ++k) {
-        ds[k] += VdW * r[k];
-        t2[k] += VW * r[k];
-        for (int l = 0; l < D; ++l) t1[k][l] += VdW * r[k] * r[l];
+    // The terms per pair (vectorised), then the sums in list order (pair_block.h).
+    const std::size_t np = gather_within(p, i, c.nl.of(i), R2, !walls_in, b);
+    const std::uint32_t* J = b.j.data();
+    const double* RX[3] = {b.dx.data(), b.dy.data(), b.dz.data()};
+    const double* RR = b.r2.data();
+    double* col[kCols];
+    for (int q = 0; q < kCols; ++q) col[q] = b[q];
+#pragma omp simd
+    for (std::size_t k = 0; k < np; ++k) {
+      const double rr = std::sqrt(RR[k]);
+      const double qi = rr * si.hinv;
+      const double W = si.w_norm * shape.w(qi), dWdr = si.dw_norm * shape.dw(qi);
+      const double Vj = V[J[k]];
+      const double VW = Vj * W, VdW = rr > 0.0 ? Vj * dWdr / rr : 0.0;
+      col[0][k] = VW;
+      for (int q = 0; q < D; ++q) {
+        const double r = RX[q][k];
+        col[1 + q][k] = VdW * r;
+        col[1 + D + q][k] = VW * r;
+        for (int l = 0; l < D; ++l) col[1 + 2 * D + D * q + l][k] = VdW * r * RX[l][k];
       }
     }
+    double sum[kCols] = {};
+    for (std::size_t k = 0; k < np; ++k)
+      for (int q = 0; q < kCols; ++q) sum[q] += col[q][k];
+    const double s = sum[0];
+    const double* ds = sum + 1;
+    const double* t2 = sum + 1 + D;
+    const double* t1 = sum + 1 + 2 * D;
     const double sinv = 1.0 / s;
     Mat M;
     for (int k = 0; k < D; ++k)
-      for (int l = 0; l < D; ++l) M(k, l) = (-t1[k][l] + ds[k] * t2[l] * sinv) * sinv;
+      for (int l = 0; l < D; ++l) M(k, l) = (-t1[D * k + l] + ds[k] * t2[l] * sinv) * sinv;
     Mat Li = Mat::Identity();
     bool fell_back = true;
     const double det = M.determinant();
@@ -96,7 +111,14 @@ std::size_t correct(StageContext& c, std::vector<double>& vol) {
       C[k][i] = ck * sinv * sinv;
     }
   }
+  }
   return fallbacks;
+}
+
+template <int D>
+std::size_t correct(StageContext& c, std::vector<double>& vol) {
+  // the kernel shape is chosen once here, not per pair
+  return shape::with_shape(c.kernel.type(), D, [&](auto s) { return correct<D>(c, s, vol); });
 }
 
 class GradientCorrection final : public Stage {

@@ -32,6 +32,18 @@ inline double monaghan_pi(double vdotr, double r2, double hi, double hj, double 
   return (-alpha * cm * mu + beta * mu * mu) / rhom;
 }
 
+/// monaghan_pi without a branch: both sides evaluated, the same value (for vectorised pair loops, where
+/// a receding pair costs a lane, not a mispredicted branch).
+inline double monaghan_pi_nb(double vdotr, double r2, double hi, double hj, double rhoi, double rhoj, double ci,
+                             double cj, double alpha, double beta, double eps) {
+  const double hm = 0.5 * (hi + hj);
+  const double mu = hm * vdotr / (r2 + eps * hm * hm);
+  const double rhom = 0.5 * (rhoi + rhoj);
+  const double cm = 0.5 * (ci + cj);
+  const double pi = (-alpha * cm * mu + beta * mu * mu) / rhom;
+  return vdotr >= 0.0 ? 0.0 : pi;
+}
+
 /// Signal speed of a pair for the Courant limit (Monaghan 1997): c_ab - 2 w_ab for approaching pairs
 /// (w = v_ab . r_hat). The viscosity acts as a diffusion of strength ~ alpha c h (and beta |w| h), so
 /// beyond alpha = 1, beta = 2 the explicit limit shrinks in proportion (alpha = 8 ran unstably without).

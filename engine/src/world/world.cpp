@@ -6,11 +6,13 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <omp.h>
 
 #include "core/parallel.h"
 #include "core/pipeline.h"
 #include "core/spatial_order.h"
 #include "core/stage.h"
+#include "core/team_size.h"
 
 namespace sph {
 namespace {
@@ -21,26 +23,9 @@ namespace {
 /// far less than a step.
 constexpr std::int64_t kReorderEvery = 16;
 
-/// Lists of a fixed-h scene without ghosts are built this fraction of the support beyond it and kept
-/// while no particle has moved more than half of that: a pair that comes within reach was in reach of
-/// the longer list when it was built.
-constexpr double kVerletSkin = 0.15;
-
 /// Seconds since `t0` on the monotonic clock.
 double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-/// How far beyond the current h the neighbour lists reach: the Newton-Raphson solve may grow h by 20%
-/// before the list is rebuilt; an evolved h changes by far less than 5% in a step; a fixed h needs no
-/// margin (the lists are exact for the positions of each evaluation; see kVerletSkin).
-double skin(HMode mode) {
-  switch (mode) {
-    case HMode::Variable: return 1.2;
-    case HMode::Evolved: return 1.05;
-    case HMode::Fixed: return 1.0;
-  }
-  return 1.2;
 }
 
 }  // namespace
@@ -60,7 +45,8 @@ DivergedError::DivergedError(std::int64_t particle_, std::int64_t step_, double 
       particle(particle_), step(step_), t(t_), field(field_) {}
 
 World::World(const RunConfig& cfg)
-    : cfg_(cfg), kernel_(cfg.params.kernel.type, cfg.scene->dim), stats_(std::make_unique<EvalStats>()) {
+    : cfg_(cfg), kernel_(cfg.params.kernel.type, cfg.scene->dim), stats_(std::make_unique<EvalStats>()),
+      team_(std::make_unique<TeamChooser>()) {
   check_physics(*cfg_.scene, cfg_.params.physics);
   pipeline_ = std::make_unique<Pipeline>(cfg_.params.physics, cfg_.scene->dim);
   SceneSetup setup = cfg_.scene->build(cfg_.params, cfg_.values);
@@ -126,9 +112,12 @@ void World::adopt(Particles&& fresh) {
   apply_boundaries(domain_, p_);
   integrator_->reset();  // its history was per particle
   nl_ = NeighbourList{};
+  exact_ = NeighbourList{};
+  for (auto& xb : x_built_) xb.clear();
   h_limit_.clear();
   lists_valid_ = false;
   rates_known_ = false;
+  t_last_eval_ = -1.0;
   by_id_.clear();
   reorder();
 }
@@ -159,7 +148,12 @@ void World::reorder() {
   p_.permute(order);
   integrator_->permute(order);
   permute_neighbours(nl_, order);  // the lists stay valid for the current state
-  lists_valid_ = false;             // but are rebuilt at the next evaluation (x_built_ is not permuted)
+  permute_neighbours(exact_, order);
+  for (auto& xb : x_built_)
+    if (xb.size() == n) {
+      const std::vector<double> old = xb;
+      for (std::size_t k = 0; k < n; ++k) xb[k] = old[order[k]];
+    }
   if (h_limit_.size() == n) {
     const std::vector<double> old = h_limit_;
     for (std::size_t k = 0; k < n; ++k) h_limit_[k] = old[order[k]];
@@ -176,8 +170,9 @@ void World::reset_timings() {
 
 StageContext World::context() const {
   // Stages get the particles mutable; const callers (potentials, limits) only read them.
-  return StageContext{cfg_.params, kernel_, domain_, const_cast<Particles&>(p_), nl_, h_limit_,
-                      eta(), spacing_, wall_strength_, *stats_};
+  const NeighbourList& lists = pipeline_->exact_lists() ? exact_ : nl_;
+  return StageContext{cfg_.params, kernel_, domain_, const_cast<Particles&>(p_), lists, h_limit_,
+                      eta(), spacing_, wall_strength_, *stats_, since_};
 }
 
 void World::set_params(const Params& p) {
@@ -197,62 +192,23 @@ void World::set_params(const Params& p) {
   current_ = false;  // rates depend on the parameters: re-evaluate before the next step
   rates_known_ = false;
   lists_valid_ = false;  // the kernel, h or the boundaries may have changed
+  t_last_eval_ = -1.0;   // rates of other parameters make no first guess
   // new parameters may change dt and the energies legitimately (e.g. gravity switched on): the blow-up
   // guards measure from the next step on
   dt_first_ = 0.0;
   energy_scale_ = -1.0;
 }
 
-void World::prepare_neighbours() {
-  const std::size_t n = p_.size();
-  auto& h = p_[Field::H];
-  // Fixed h and no ghosts (an open domain): wide lists outlive a step (Verlet lists); the stages get
-  // the exact lists filtered from them at every evaluation.
-  bool open = true;
-  for (int k = 0; k < p_.dim(); ++k) open = open && domain_.bc[k] == Boundary::Open;
-  const bool verlet = cfg_.params.physics.smoothing == HMode::Fixed && open;
-  const double reach = skin(cfg_.params.physics.smoothing);
-  if (verlet && lists_valid_ && wide_.offset.size() == n + 1) {
-    const std::size_t nf = p_.fluid();
-    double moved2 = 0.0;  // the largest squared displacement since the build: the same for any thread count
-#pragma omp parallel for reduction(max : moved2) if (nf >= kParallelMin)
-    for (std::size_t i = 0; i < nf; ++i) {
-      double d2 = 0.0;
-      for (int k = 0; k < 3; ++k) d2 += (p_.x[k][i] - x_built_[k][i]) * (p_.x[k][i] - x_built_[k][i]);
-      moved2 = std::max(moved2, d2);
-    }
-    if (4.0 * moved2 < verlet_margin_ * verlet_margin_) {
-      filter_neighbours(p_, h, kernel_.support() * reach, wide_, nl_);
-      return;
-    }
-  }
-  double hmax = 0.0, hmin = 1e300;
-#pragma omp parallel for reduction(max : hmax) reduction(min : hmin) if (n >= kParallelMin)
-  for (std::size_t i = 0; i < n; ++i) { hmax = std::max(hmax, h[i]); hmin = std::min(hmin, h[i]); }
-  const double wide_reach = reach * (verlet ? 1.0 + kVerletSkin : 1.0);
-  make_ghosts(domain_, kernel_.support() * wide_reach * hmax, p_);
-  copy_ghost_velocity(p_);
-  copy_ghost_fields(p_, start_shared_);
-  h_limit_.resize(n);
-#pragma omp parallel for if (n >= kParallelMin)
-  for (std::size_t i = 0; i < n; ++i) h_limit_[i] = reach * h[i];
-  lists_valid_ = verlet;
-  if (!verlet) {
-    build_neighbours(p_, h, kernel_.support() * reach, nl_);
-    wide_ = NeighbourList{};
-    return;
-  }
-  build_neighbours(p_, h, kernel_.support() * wide_reach, wide_);
-  filter_neighbours(p_, h, kernel_.support() * reach, wide_, nl_);
-  for (int k = 0; k < 3; ++k) x_built_[k].assign(p_.x[k].begin(), p_.x[k].begin() + static_cast<std::ptrdiff_t>(n));
-  verlet_margin_ = kVerletSkin * kernel_.support() * hmin;
-}
-
-void World::evaluate() {
+void World::evaluate(double t_eval) {
+  since_ = t_last_eval_ >= 0.0 && t_eval >= t_last_eval_ ? t_eval - t_last_eval_ : 0.0;
   bound();
   const std::size_t n = p_.size();
   StageContext ctx = context();
   if (timings_.size() != pipeline_->stages().size() + 1) reset_timings();
+  struct Rewrap {  // the wrapped coordinates come back however the stages end
+    World& w;
+    ~Rewrap() { w.rewrap(); }
+  } rewrap_after{*this};
   for (int attempt = 0;; ++attempt) {
     auto t0 = std::chrono::steady_clock::now();
     if (pipeline_->uses_neighbours()) prepare_neighbours();  // pure N-body: no lists at all
@@ -270,11 +226,15 @@ void World::evaluate() {
       ++timings_[k++].calls;
       if (!done) { complete = false; break; }
     }
+    rewrap();
     if (complete) break;
+    lists_valid_ = false;  // an h outgrew its list: new lists from the new h
+    ++h_overflows_;
     if (attempt > 20)
       throw DivergedError(-1, step_, t_, "h", "the smoothing length outgrows its neighbour lists on every rebuild");
   }
   ++evaluations_;
+  t_last_eval_ = t_eval;
   rates_known_ = true;
 }
 
@@ -315,6 +275,19 @@ PhaseSpace World::phase_space() {
 }
 
 void World::step(double dt_max) {
+  const int full = omp_get_max_threads();
+  last_team_ = adaptive_threads_ ? team_->next(full) : full;
+  struct Team {  // the caller's setting comes back however the step ends
+    int full;
+    ~Team() { omp_set_num_threads(full); }
+  } restore{full};
+  omp_set_num_threads(last_team_);
+  const auto t0 = std::chrono::steady_clock::now();
+  advance(dt_max);
+  if (adaptive_threads_) team_->record(since(t0));
+}
+
+void World::advance(double dt_max) {
   if (step_ > 0 && step_ % kReorderEvery == 0) reorder();
   const double dt_free = next_dt();
   double dt = std::min(dt_free, dt_max);
@@ -337,7 +310,8 @@ void World::step(double dt_max) {
     }
   }
   PhaseSpace s = phase_space();
-  current_ = integrator_->step(s, [this] { evaluate(); }, dt, current_);
+  const double t0 = t_;
+  current_ = integrator_->step(s, [this, t0](double offset) { evaluate(t0 + offset); }, dt, current_);
   bound();
   t_ += dt;
   dt_last_ = dt;
@@ -360,9 +334,12 @@ void World::after_step() {
     if (s->acts_after(cfg_.params, step_)) {
       s->after_step(ctx);
       copy_ghost_fields(p_, s->shares());
-      Particles fresh;
-      if (s->take_resampled(fresh)) adopt(std::move(fresh));
     }
+  rewrap();
+  for (const auto& s : pipeline_->stages()) {
+    Particles fresh;
+    if (s->acts_after(cfg_.params, step_) && s->take_resampled(fresh)) adopt(std::move(fresh));
+  }
   current_ = false;  // the state changed: the next step evaluates first
 }
 

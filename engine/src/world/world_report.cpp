@@ -60,8 +60,11 @@ double velocity_of(const Particles& p, std::size_t j, int k) {
 }
 
 /// Vorticity dv_y/dx - dv_x/dy of the fluid (2D), from the standard SPH gradient
-/// dv_k/dx_l ~ sum_b V_b (v_b - v_a)_k grad_l W_ab(h_a), over the last evaluation's neighbours.
-std::vector<double> vorticity(const Particles& p, const Kernel& K, const NeighbourList& nl) {
+/// dv_k/dx_l ~ sum_b V_b (v_b - v_a)_k grad_l W_ab(h_a), over the last evaluation's neighbours (the
+/// nearest periodic image of each: a particle may have wrapped since the lists were built).
+std::vector<double> vorticity(const Particles& p, const Kernel& K, const NeighbourList& nl, const Domain& d) {
+  const double Lx = d.bc[0] == Boundary::Periodic ? d.length(0) : 0.0;
+  const double Ly = d.bc[1] == Boundary::Periodic ? d.length(1) : 0.0;
   std::vector<double> w(p.size(), 0.0);
   const auto& m = p[Field::Mass];
   const auto& rho = p[Field::Density];
@@ -71,7 +74,9 @@ std::vector<double> vorticity(const Particles& p, const Kernel& K, const Neighbo
     double s = 0.0;
     for (std::uint32_t j : nl.of(i)) {
       if (j == i || j >= p.total() || p.kind[j]) continue;
-      const double dx = p.x[0][i] - p.x[0][j], dy = p.x[1][i] - p.x[1][j];
+      double dx = p.x[0][i] - p.x[0][j], dy = p.x[1][i] - p.x[1][j];
+      if (Lx > 0.0) dx -= Lx * std::nearbyint(dx / Lx);
+      if (Ly > 0.0) dy -= Ly * std::nearbyint(dy / Ly);
       const double r = std::sqrt(dx * dx + dy * dy);
       if (r == 0.0 || r >= K.support() * h[i]) continue;
       const double f = m[j] / rho[j] * K.dWdr(r, h[i]) / r;  // grad W = f (dx, dy)
@@ -151,7 +156,7 @@ Snapshot World::snapshot() const {
   if (cfg_.params.physics.fpm != FpmType::None)  // Burgers' u first: what a viewer shows by default
     std::stable_partition(s.fields.begin(), s.fields.end(), [](const SnapshotField& f) { return f.name == "vx"; });
   if (s.dim == 2 && p_.has(Field::Density)) {
-    const std::vector<double> w = vorticity(p_, kernel_, nl_);
+    const std::vector<double> w = vorticity(p_, kernel_, nl_, domain_);
     add("vorticity", "vorticity dv_y/dx - dv_x/dy", [&](std::size_t i) { return w[i]; });
   }
   if (walls) add("kind", "particle kind (0 fluid, 1 wall)", [&](std::size_t i) { return double(p_.kind[i]); });
