@@ -110,6 +110,14 @@ TEST(WorldInspect, StoredAndReEvaluatedRatesAgree) {
   }
 }
 
+/// The elliptical drop at dx = 0.05 with these settings.
+RunConfig drop(std::initializer_list<std::pair<const char*, const char*>> sets) {
+  RunConfig cfg = RunConfig::from_scene("elliptical_drop");
+  cfg.set("scene.dx", "0.05", "test");
+  for (const auto& [k, v] : sets) cfg.set(k, v, "test");
+  return cfg;
+}
+
 TEST(WorldInspect, LiquidsTermsAddUp) {
   {  // standard-corrected with dummy walls and gravity (the default dam break)
     RunConfig cfg = RunConfig::from_scene("dam_break");
@@ -126,12 +134,7 @@ TEST(WorldInspect, LiquidsTermsAddUp) {
     EXPECT_NEAR(g->a.x, 0.0, 1e-12 * (1.0 + in->a_total.norm()));
   }
   {  // corrected stress form with the viscous stress
-    RunConfig cfg = RunConfig::from_scene("elliptical_drop");
-    cfg.set("physics.force", "corrected", "test");
-    cfg.set("physics.viscosity", "laplacian", "test");
-    cfg.set("visc.nu", "0.01", "test");
-    cfg.set("scene.dx", "0.05", "test");
-    World w(cfg);
+    World w(drop({{"physics.force", "corrected"}, {"physics.viscosity", "laplacian"}, {"visc.nu", "0.01"}}));
     for (int k = 0; k < 10; ++k) w.step();
     expect_terms_add_up(w, 97, "elliptical_drop_corrected");
     const auto in = w.inspect(5);
@@ -139,11 +142,7 @@ TEST(WorldInspect, LiquidsTermsAddUp) {
     EXPECT_NE(term(*in, "viscous stress"), nullptr);
   }
   {  // standard with XSPH and Monaghan viscosity
-    RunConfig cfg = RunConfig::from_scene("elliptical_drop");
-    cfg.set("physics.force", "standard", "test");
-    cfg.set("physics.xsph", "on", "test");
-    cfg.set("scene.dx", "0.05", "test");
-    World w(cfg);
+    World w(drop({{"physics.force", "standard"}, {"physics.xsph", "on"}}));
     for (int k = 0; k < 10; ++k) w.step();
     expect_terms_add_up(w, 97, "elliptical_drop_standard");
   }
