@@ -3,6 +3,8 @@
 #include <string>
 #include <vector>
 
+#include "cli_compare.h"
+
 namespace sph::cli {
 
 struct RunOptions {
@@ -23,6 +25,8 @@ struct RunOptions {
   std::string profile_axis = "off";  ///< 2D scenes: "x" or "y" plots the field against that coordinate
   std::string video;
   long long tree_probe = -1;       ///< frames draw the Barnes-Hut walk of this particle (-1: none)
+  std::string panels;              ///< profiles: comma-separated fields, one panel each ("rho,v,p,u")
+  CompareOptions compare;          ///< run B of an A/B comparison (--compare, --compare-set)
 };
 
 int run_command(const RunOptions& opt);

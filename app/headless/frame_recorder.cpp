@@ -88,8 +88,15 @@ OffscreenRenderer::~OffscreenRenderer() {
 
 bool OffscreenRenderer::render(const sph::Snapshot& snap, const render::ViewSettings& view, int width, int height,
                                std::vector<std::uint8_t>* rgba, std::string* err) {
+  render::FrameScene scene;
+  scene.a = &snap;
+  return render(scene, view, width, height, rgba, err);
+}
+
+bool OffscreenRenderer::render(const render::FrameScene& scene, const render::ViewSettings& view, int width,
+                               int height, std::vector<std::uint8_t>* rgba, std::string* err) {
   if (!context_->make_current(width, height, err)) return false;
-  renderer_.render(snap, view, width, height);
+  renderer_.render(scene, view, width, height);
   last_gl_error_ = renderer_.gl().GetError();
   return context_->read_pixels(rgba, err);
 }
@@ -205,6 +212,7 @@ FrameRecorder::FrameRecorder(const FrameOptions& options, std::unique_ptr<Offscr
   view_.percentile_hi = options.percentile_hi;
   view_.log_scale = options.log_scale;
   view_.profile_axis = render::parse_profile_axis(options.profile_axis).value_or(-1);
+  view_.panels = options.panels;
 }
 
 FrameRecorder::~FrameRecorder() {
@@ -271,11 +279,18 @@ std::string FrameRecorder::frame_path(int index) const {
 }
 
 bool FrameRecorder::write_frame(const sph::Snapshot& snap, std::string* err) {
+  render::FrameScene scene;
+  scene.a = &snap;
+  return write_frame(scene, err);
+}
+
+bool FrameRecorder::write_frame(const render::FrameScene& scene, std::string* err) {
+  const sph::Snapshot& snap = *scene.a;
   if (snap.find(view_.color_by) == nullptr) {
     fail(err, std::string(flag::kColorBy) + ": " + render::missing_field_message(snap, view_.color_by));
     return false;
   }
-  if (!renderer_->render(snap, view_, options_.width, options_.height, &pixels_, err)) return false;
+  if (!renderer_->render(scene, view_, options_.width, options_.height, &pixels_, err)) return false;
   if (!writer_->submit(frame_path(frames_), options_.width, options_.height, &pixels_, err)) return false;
   if (frames_ == 0) first_t_ = snap.t;
   // Next due time: the first multiple of `every` (counted from frame 0) after this snapshot's time.

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "frame_scene.h"
 #include "osmesa_context.h"
 #include "renderer.h"
 #include "view_settings.h"
@@ -27,6 +28,7 @@ inline constexpr const char* kRange = "--range";
 inline constexpr const char* kProfileAxis = "--profile-axis";
 inline constexpr const char* kVideo = "--video";
 inline constexpr const char* kFps = "--fps";
+inline constexpr const char* kPanels = "--panels";
 }  // namespace flag
 
 struct FrameOptions {
@@ -41,6 +43,7 @@ struct FrameOptions {
   float percentile_lo = 0, percentile_hi = 100;  ///< auto range between these percentiles (--range pLO:HI)
   bool log_scale = false;     ///< colour by log10 of the field (--log)
   std::string profile_axis = "off";  ///< 2D: "x" or "y" (profile of the field against it), or "off"
+  std::vector<std::string> panels;   ///< profiles: one panel per field (ViewSettings::panels)
   std::string video;          ///< mp4 path to make from the frames, or empty
   int fps = 30;               ///< video frame rate [frames per second]
 };
@@ -52,6 +55,8 @@ class OffscreenRenderer {
   ~OffscreenRenderer();  ///< frees the GL objects with its own context current
   /// Renders into an RGBA8 buffer of width*height*4 bytes, rows top-down.
   bool render(const sph::Snapshot& snap, const render::ViewSettings& view, int width, int height,
+              std::vector<std::uint8_t>* rgba, std::string* err);
+  bool render(const render::FrameScene& scene, const render::ViewSettings& view, int width, int height,
               std::vector<std::uint8_t>* rgba, std::string* err);
   /// glGetError() after the last render (GL_NO_ERROR = 0 when all went well).
   unsigned gl_error() const { return last_gl_error_; }
@@ -91,6 +96,8 @@ class FrameRecorder {
   /// flush). Fails (with the field named and the available ones listed) if the colour-by field is
   /// not in the snapshot.
   bool write_frame(const sph::Snapshot& snap, std::string* err);
+  /// The same for a FrameScene (the two runs of a comparison, highlights).
+  bool write_frame(const render::FrameScene& scene, std::string* err);
   /// Waits until every frame is on disk; false with the first write error.
   bool flush(std::string* err);
   int frames_written() const { return frames_; }

@@ -30,6 +30,12 @@ int main(int argc, char** argv) {
   run->add_option("--out", opt.out, "output directory: scene.json, diagnostics.csv, particles_*.csv, errors.csv");
   run->add_option("--threads", opt.threads, "OpenMP threads")->check(CLI::Range(1, 1024));
   run->add_flag("--quiet", opt.quiet, "no summary line");
+  run->add_option("--compare", opt.compare.scene,
+                  "A/B comparison: run B is this scene name or JSON file (the same scene as A, other parameters), "
+                  "stepped to A's times; its files go to OUT/B, its frames beside A's");
+  run->add_option("--compare-set", opt.compare.sets,
+                  "A/B comparison: run B is run A (or --compare's scene) with key=value changed (repeatable), "
+                  "e.g. --compare-set kernel.type=M6");
 #ifdef SPH_HAVE_FRAMES  // OSMesa build: image sequences
   run->add_option("--frames", opt.frames, "write PNG frames into this directory");
   run->add_option("--every", opt.every, "simulated time between frames")->check(finite_from(0.0, true));
@@ -41,6 +47,8 @@ int main(int argc, char** argv) {
   run->add_option("--profile-axis", opt.profile_axis,
                   "2D scenes: plot the field against x or y (with its reference curve) instead of the plane; off");
   run->add_option("--video", opt.video, "also make this .mp4 with ffmpeg");
+  run->add_option("--panels", opt.panels,
+                  "profiles (1D, or --profile-axis): one panel per field, comma-separated, e.g. rho,v,p,u (v: v_x in 1D)");
   run->add_option("--tree-probe", opt.tree_probe,
                   "scenes with physics.gravity = tree: draw the cells of this particle's tree walk in the frames")
       ->check(CLI::NonNegativeNumber);

@@ -2,17 +2,6 @@
 
 namespace sph::detail {
 
-RunConfig fork_config(const RunConfig& a, const std::vector<std::string>& overrides) {
-  RunConfig b = a;
-  for (const std::string& kv : overrides) {
-    const auto eq = kv.find('=');
-    if (eq == std::string::npos || eq == 0) throw ConfigError("compare: '" + kv + "': expected key=value");
-    b.set(kv.substr(0, eq), kv.substr(eq + 1), "compare " + kv);
-  }
-  b.validate();
-  return b;
-}
-
 bool CompareRun::start(const RunConfig& a, const std::vector<std::string>& overrides, std::string* err) {
   stop();
   try {

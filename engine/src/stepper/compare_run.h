@@ -7,14 +7,11 @@
 #include <vector>
 
 #include "history.h"
+#include "sph/compare.h"
 #include "sph/stepper.h"
 #include "sph/world.h"
 
 namespace sph::detail {
-
-/// A's config with the overrides applied (key=value, as --set) and validated; throws ConfigError
-/// naming the override.
-RunConfig fork_config(const RunConfig& a, const std::vector<std::string>& overrides);
 
 class CompareRun {
  public:
