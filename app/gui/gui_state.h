@@ -67,6 +67,12 @@ class GuiState {
   /// Frames carry particle k's Barnes-Hut walk (the tree overlay); k < 0 turns it off.
   void set_tree_probe(std::int64_t k);
   void set_record_interval(double every) { stepper_.set_record_interval(every); }
+  /// A/B comparison: both runs restart from t = 0, run B with these overrides (key=value); empty: stop.
+  void set_compare(const std::vector<std::string>& overrides) { stepper_.set_compare(overrides); }
+  /// The particle inspector shows particle `id` (< 0: closes it).
+  void inspect(std::int64_t id);
+  std::int64_t inspect_id = -1;    ///< as last sent (-1: the inspector is closed)
+  std::string compare_text = "kernel.type=M6";  ///< the compare panel's overrides, comma-separated
   double real_time_factor = 0.0;   ///< as last sent (0 = as fast as possible)
   bool stop_at_end = true;         ///< as last sent
   std::int64_t tree_probe = -1;    ///< as last sent (-1: no tree overlay)

@@ -68,6 +68,7 @@ bool add_legend(FrameBuild& f, const PixelRect& box, std::span<const LegendEntry
       f.over.line(x0, y, x1, y, e.size, e.color);
     }
     f.text.add(e.label, x1 + pad, y - 0.5f * lh, s, palette::kText);
+    f.layout.legend_rows.push_back(e.label);
     y += lh + gap;
   }
   return true;
