@@ -165,7 +165,7 @@ void compose_panel(FrameBuild& f, const ProfilePanel& p, const ViewSettings& vie
     b.colors = {run.colour ? palette::kInvalid : run.solid, run.solid};
     build_instances(*run.snap, colour, o, &b.instances, &b.index);
     add_dots(b.instances);
-    if (k == 0) clipped = &b.clipped;
+    clipped = &b.clipped;  // the curve over every run's dots: into the panel's last batch
   }
 
   std::vector<LegendEntry> rows;

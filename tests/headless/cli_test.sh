@@ -175,5 +175,29 @@ bad bench_bad_integrator 3 "verlet" bench sod --integrators verlet --values 50,1
 bad bench_no_reference 3 "reference" bench box_lattice
 bad bench_junk_value 3 "abc" bench sod --values 50,abc
 
+# A/B comparison: run B stepped to A's times, its files in OUT/B, its L1 beside A's in the summary
+"$sph" run sod --set scene.n_left=100 --compare-set kernel.type=M6 --out "$work/ab" > "$work/ab.log"
+check "compare" 0 $?
+ok "compare: B's files" test -s "$work/ab/B/particles_00004.csv"
+ok "compare: B's scene is M6" grep -q '"kernel.type": "M6"' "$work/ab/B/scene.json"
+ok "compare: A stays M4" grep -q '"kernel.type": "M4"' "$work/ab/scene.json"
+ok "compare: B at A's end time" grep -q "^# t = 0.2," "$work/ab/B/particles_00004.csv"
+ok "compare: B's summary with its L1" grep -q "^run B: kernel.type=M6: t = 0.2 .*L1_rho = " "$work/ab.log"
+ok "compare: A's files as without B" cmp -s "$work/ab/particles_00004.csv" "$work/sod/particles_00004.csv"
+# a scene file as run B: its differences name it
+"$sph" run sod --set scene.n_left=100 --until 0 --compare "$root/assets/scenes/sod.json" --compare-set visc.alpha=0.5 \
+  --set visc.alpha=1 > "$work/abf.log"; check "compare with a file" 0 $?
+ok "compare with a file: label" grep -q "^run B: visc.alpha=0.5, scene.n_left=400" "$work/abf.log"
+bad compare_other_scene 3 "same scene" run sod --compare lax
+bad compare_bad_key 3 "nope" run sod --compare-set nope=1
+bad compare_not_kv 3 "key=value" run sod --compare-set M6
+if "$sph" run --help | grep -q -- "--frames"; then
+  env -u DISPLAY "$sph" run sod --set scene.n_left=100 --compare-set visc.alpha=0 --frames "$work/abfr" --every 0.2 \
+    --panels rho,v,p,u --size 640x480 > /dev/null
+  check "compare frames with panels" 0 $?
+  ok "compare frames" test "$(png_size "$work/abfr/frame_00001.png")" = "640x480"
+  bad bad_panel 2 "nope" run sod --frames "$work/bp" --panels rho,nope
+fi
+
 echo "$passes passed, $fails failed"
 [ "$fails" -eq 0 ]
