@@ -87,8 +87,9 @@ struct StepperFrame {
 
   bool comparing = false;          ///< `compare` holds run B of an A/B comparison
   CompareFrame compare;
-  /// World::inspect of the particle asked for (Stepper::set_inspect); refreshed at most 4 times a
-  /// second while running (its `step` says which state it explains), at every publication otherwise.
+  /// World::inspect of the particle asked for (Stepper::set_inspect); while running refreshed at most 4
+  /// times a second and within a tenth of the engine's time (its `step` says which state it explains),
+  /// at every new state otherwise.
   std::optional<Inspection> inspection;
 };
 
