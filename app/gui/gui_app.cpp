@@ -81,6 +81,21 @@ void handle_recording(GuiState& s, Recorder& rec) {
   s.requests.start_recording = s.requests.stop_recording = false;
 }
 
+/// Test hook --click-particle FRAME:ID: the mouse on particle ID's dot, pressed at FRAME, released at the
+/// next frame (ImGui's input for this frame, after the GLFW backend filled it).
+void click_hook(const GuiOptions& o, long long frame, const ParticleView& view, const Rect& r) {
+  for (const std::string& c : o.click_particles) {
+    const auto colon = c.find(':');
+    const long long at = std::stoll(c.substr(0, colon)), id = std::stoll(c.substr(colon + 1));
+    if (frame != at && frame != at + 1) continue;
+    if (const auto pos = view.window_pos_of(0, static_cast<std::uint32_t>(id), r)) {
+      ImGuiIO& io = ImGui::GetIO();
+      io.MousePos = ImVec2((*pos)[0], (*pos)[1]);
+      io.MouseDown[0] = frame == at;
+    }
+  }
+}
+
 /// What the view showed last, for scripted checks: its legend rows and the inspected particle's numbers
 /// (17 digits: a test recomputes them with World::inspect).
 void report_view(const ParticleView& view, const StepperFrame& f) {
@@ -147,6 +162,7 @@ int run_gui(const GuiOptions& o) {
   std::uint64_t last_ui = 0;  // draw-data fingerprint of the last drawn frame
   int last_fw = 0, last_fh = 0;
   bool end_shown = false;     // --quit-at-end: the view showed the state at t_end (quit at the next frame)
+  Rect last_view_rect;        // where the view was drawn last frame [framebuffer px]
 
   while (!window->should_close()) {
     glfwPollEvents();
@@ -168,6 +184,7 @@ int run_gui(const GuiOptions& o) {
 
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
+    click_hook(o, stats.frames(), view, last_view_rect);
     ImGui::NewFrame();
     const ImGuiIO& io = ImGui::GetIO();
     Layout L = compute_layout(static_cast<int>(io.DisplaySize.x), static_cast<int>(io.DisplaySize.y),
@@ -190,6 +207,7 @@ int run_gui(const GuiOptions& o) {
     int fw = 0, fh = 0;
     window->framebuffer_size(&fw, &fh);
     const Rect view_rect = to_framebuffer(L.view);
+    last_view_rect = view_rect;
     const std::uint64_t ui = draw_data_hash(*ImGui::GetDrawData());
     const bool last = (o.quit_after_frames > 0 && stats.frames() + 1 >= o.quit_after_frames) || end_shown;
     const render::FrameScene scene = f ? view_scene(*f) : render::FrameScene{};

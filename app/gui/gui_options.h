@@ -31,6 +31,9 @@ struct GuiOptions {
   /// Test hook: quit (after --screenshot) once the run is at t_end and the view shows that state (and
   /// the inspection and the comparison asked for have arrived); --quit-after-frames stays a limit.
   bool quit_at_end = false;
+  /// Test hook: FRAME:ID presses the left mouse button on particle ID's dot at displayed frame FRAME and
+  /// releases it at the next (a click through the view's picking, as a user's).
+  std::vector<std::string> click_particles;
 };
 
 /// Parses argv. Returns -1 to go on, or the exit code (0 after --help, 2 on a usage error).

@@ -135,4 +135,12 @@ std::optional<render::Picked> ParticleView::particle_under_mouse(const Rect& r) 
   return renderer_.pick(mx, my, 6.f * sx);
 }
 
+std::optional<std::array<float, 2>> ParticleView::window_pos_of(int run, std::uint32_t index, const Rect& r) const {
+  if (!drawn_) return std::nullopt;
+  const auto p = renderer_.pixel_of(run, index);
+  if (!p) return std::nullopt;
+  const ImGuiIO& io = ImGui::GetIO();
+  return std::array<float, 2>{(r.x + (*p)[0]) / io.DisplayFramebufferScale.x, (r.y + (*p)[1]) / io.DisplayFramebufferScale.y};
+}
+
 }  // namespace sph::gui

@@ -4,6 +4,7 @@
 // Mouse: 2D drag pans and the wheel zooms about the cursor; 3D drag orbits and the wheel zooms;
 // double-click fits the view again.
 #pragma once
+#include <array>
 #include <chrono>
 #include <cstdint>
 #include <optional>
@@ -44,6 +45,8 @@ class ParticleView {
                    std::vector<std::uint8_t>* rgba, std::string* err);
   /// The particle under the mouse in the view drawn into `r` (framebuffer px), within a few pixels.
   std::optional<render::Picked> particle_under_mouse(const Rect& r) const;
+  /// Where particle `index` of run 0 (A) or 1 (B) is on screen [window px, ImGui's mouse coordinates].
+  std::optional<std::array<float, 2>> window_pos_of(int run, std::uint32_t index, const Rect& r) const;
   const render::FrameLayout& layout() const { return renderer_.last_layout(); }
 
  private:

@@ -85,4 +85,15 @@ std::optional<Picked> pick_particle(const FrameBuild& f, float px, float py, flo
   return best;
 }
 
+std::optional<std::array<float, 2>> locate_particle(const FrameBuild& f, int run, std::uint32_t index) {
+  for (const DrawnSet& set : drawn_sets(f)) {
+    if (set.run != run) continue;
+    for (std::size_t k = 0; k < set.index->size(); ++k) {
+      float x = 0.f, y = 0.f;
+      if ((*set.index)[k] == index && pixel_of(set, k, &x, &y)) return std::array<float, 2>{x, y};
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace sph::render

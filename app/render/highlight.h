@@ -3,6 +3,8 @@
 // frame draws that run's particles (the plane, every profile panel); and which drawn particle is
 // nearest to a pixel.
 #pragma once
+#include <array>
+#include <cstdint>
 #include <optional>
 
 #include "frame_build.h"
@@ -15,5 +17,8 @@ void add_highlight(FrameBuild& f, const Highlight& h);
 
 /// The particle drawn nearest to frame pixel (px, py), if one is within max_px of it.
 std::optional<Picked> pick_particle(const FrameBuild& f, float px, float py, float max_px);
+
+/// Where particle `index` of `run` is drawn (the first plot showing it) [frame px]; nullopt if nowhere.
+std::optional<std::array<float, 2>> locate_particle(const FrameBuild& f, int run, std::uint32_t index);
 
 }  // namespace sph::render

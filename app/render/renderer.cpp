@@ -128,6 +128,10 @@ std::optional<Picked> Renderer::pick(float px, float py, float max_px) const {
   return pick_particle(impl_->frame, px, py, max_px);
 }
 
+std::optional<std::array<float, 2>> Renderer::pixel_of(int run, std::uint32_t index) const {
+  return locate_particle(impl_->frame, run, index);
+}
+
 void Renderer::compose(FrameBuild& f, const FrameScene& scene, const ViewSettings& view, const ShownField& shown,
                        int width, int height) {
   const sph::Snapshot& snap = *scene.a;
@@ -135,7 +139,7 @@ void Renderer::compose(FrameBuild& f, const FrameScene& scene, const ViewSetting
   const int axis = snap.dim == 1 ? 0 : view.profile_axis;
   const bool profile = draws_profile(snap.dim, axis);
   std::vector<std::string> fields = panel_fields(snap, view.panels);
-  if (fields.empty() && shown.field) fields.push_back(shown.field->name);
+  if (fields.empty()) fields.push_back(shown.field ? shown.field->name : view.color_by);
   // a comparison's profiles show the runs in two colours, not the colour map: no colour bar
   const ShownField bar = profile && scene.b ? ShownField{} : shown;
   layout_chrome(f, bar, width, height, view.text_scale);

@@ -9,6 +9,8 @@
 //
 // Use from the thread that owns the GL context; destroy (or shutdown()) while it is current.
 #pragma once
+#include <array>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -52,6 +54,8 @@ class Renderer {
   /// The particle the last frame drew nearest to pixel (px, py) of the frame (top-left origin), if one
   /// is within max_px: picking with the mouse.
   std::optional<Picked> pick(float px, float py, float max_px) const;
+  /// Where the last frame drew particle `index` of run 0 (A) or 1 (B) [frame px]; nullopt if nowhere.
+  std::optional<std::array<float, 2>> pixel_of(int run, std::uint32_t index) const;
 
   /// Chooses how particles are drawn (default Auto: on the CPU for software GL). Both give the same
   /// picture to within a few 1/255 at antialiased edges.

@@ -6,7 +6,8 @@
 #          two PNGs are compared;
 #   ab:    an A/B comparison on sod (alpha = 1 against alpha = 0) at t = 0.15 with the inspector open on
 #          particle 410: the screenshot shows both runs and the inspector, the legend both L1 values,
-#          and the inspector's numbers are the engine's (INSPECT_CHECK).
+#          and the inspector's numbers are the engine's (INSPECT_CHECK);
+#   click: a click on a particle's dot opens the inspector on it.
 file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT})
 
@@ -60,6 +61,14 @@ elseif(MODE STREQUAL "ab")
   endif()
   run(${CHECK} ab ${OUT}/ab.png)
   run(${INSPECT_CHECK} ${OUT}/report.txt sod 0.15)
+elseif(MODE STREQUAL "click")
+  # a click on particle 300's dot (through the view's picking) opens the inspector on it
+  execute_process(COMMAND ${XVFB_RUN} -a ${GUI} --scene sod --paused --click-particle 20:300 --quit-after-frames 80
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err WORKING_DIRECTORY ${OUT})
+  message("${out}${err}")
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "inspected particle 300 at step 0")
+    message(FATAL_ERROR "expected a click on particle 300 to open the inspector on it")
+  endif()
 elseif(MODE STREQUAL "match")
   run(${XVFB_RUN} -a ${GUI} --scene sod --paused --record ${OUT}/gui --record-size 1280x720 --quit-after-frames 60)
   run(${SPH} run sod --until 0 --frames ${OUT}/headless --size 1280x720 --quiet)
