@@ -23,6 +23,27 @@ sph::SnapshotField shown_values(const sph::SnapshotField& in, bool log) {
   return out;
 }
 
+/// "A: physics.force=standard, visc.alpha=0" without the keys' groups ("A: force=standard, alpha=0"), or
+/// with values only ("A: standard, 0").
+std::string short_label(const std::string& label, bool values_only) {
+  std::string out;
+  std::size_t i = 0;
+  while (i < label.size()) {
+    const std::size_t eq = label.find('=', i);
+    if (eq == std::string::npos) break;
+    std::size_t start = label.rfind(' ', eq);  // the key starts after the space before it
+    start = start == std::string::npos || start < i ? i : start + 1;
+    out += label.substr(i, start - i);
+    if (!values_only) {
+      const std::string key = label.substr(start, eq - start);
+      const auto dot = key.rfind('.');
+      out += (dot == std::string::npos ? key : key.substr(dot + 1)) + "=";
+    }
+    i = eq + 1;
+  }
+  return out + label.substr(i);
+}
+
 /// A small horizontal colour bar of `cmap` over [lo, hi] at (x, y) with its end values beside it.
 void mini_colorbar(FrameBuild& f, float x, float y, Colormap cmap, const ValueRange& r) {
   const int s = f.layout.text_scale;
@@ -63,7 +84,10 @@ void compose_compare(FrameBuild& f, const FrameScene& scene, const ViewSettings&
   const PixelRect content = L.content;
   const float w = (content.w - (panels - 1) * gap) / panels;
   auto area = [&](int k) { return PixelRect{content.x + k * (w + gap), content.y + lh + gap, w, content.h - lh - gap}; };
-  auto caption = [&](int k, const std::string& text, Rgba colour) {
+  auto caption = [&](int k, std::string text, Rgba colour) {  // shortened to its panel's width
+    if (f.text.measure(text, s) > w) text = short_label(text, false);
+    if (f.text.measure(text, s) > w) text = short_label(text, true);
+    while (text.size() > 4 && f.text.measure(text, s) > w) text = text.substr(0, text.size() - 4) + "...";
     f.text.add(text, content.x + k * (w + gap), content.y, s, colour);
   };
   const FixedColors fixed{shown.field ? palette::kInvalid : palette::kNoField, palette::kWall};

@@ -1,5 +1,7 @@
 #include "sph/compare.h"
 
+#include <cstdio>
+
 #include "core/number_text.h"
 #include "sph/param_table.h"
 
@@ -15,7 +17,13 @@ std::string value_of(const RunConfig& cfg, const std::string& key) {
     return it == cfg.values.end() ? std::string() : short_text(it->second);
   }
   const ParamInfo* info = find_param(key);
-  return info ? info->get(cfg.params) : std::string();
+  if (info == nullptr) return {};
+  const std::string text = info->get(cfg.params);
+  double v = 0.0;
+  if (!parse_number(text, v)) return text;  // a choice: M6, leapfrog, standard
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);  // a label, not a value to read back
+  return buf;
 }
 
 }  // namespace
