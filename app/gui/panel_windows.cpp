@@ -40,6 +40,7 @@ void draw_panels(GuiState& s, const Layout& L, const FrameStats& stats) {
   if (ImGui::Begin("##status", nullptr, fixed | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar))
     status_line(s, stats);
   ImGui::End();
+  panel_help(s);
   divergence_modal(s);
 }
 

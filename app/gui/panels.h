@@ -20,5 +20,6 @@ void panel_converge(GuiState& s);     ///< convergence study of the current scen
 void panel_kernel(GuiState& s);       ///< kernel explorer: W(q), dW/dq against the Gaussian
 void status_line(GuiState& s, const FrameStats& stats);  ///< t, dt, steps/s, neighbours, h-iterations
 void divergence_modal(GuiState& s);   ///< after a NaN/inf: which particle and step, and a reset button
+void panel_help(GuiState& s);         ///< F1 / H: `sph help SCENE` for the scene on screen, in a window
 
 }  // namespace sph::gui
