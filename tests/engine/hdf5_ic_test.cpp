@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <numbers>
 #include <unistd.h>
 
 #include "io/hdf5_util.h"
@@ -208,6 +209,33 @@ TEST(Hdf5Ic, AForeignGasICRunsInItsPeriodicBox) {
   World open(cfg);
   EXPECT_EQ(open.domain().bc[0], Boundary::Open);
   fs::remove(path);
+}
+
+TEST(Hdf5Ic, ForeignNBodyParticlesTakeTheMassTableAndGOfTheirUnits) {
+  for (const bool with_units : {false, true}) {
+    BadFile f;
+    h5::Handle header = h5::create_group(f.root(), "Header");
+    h5::write_attr_ints(header.get(), "NumPart_ThisFile", {0, 3, 0, 0, 0, 0}, H5T_STD_U32LE);
+    h5::write_attr(header.get(), "MassTable", std::vector<double>{0.0, 0.25, 0, 0, 0, 0});
+    h5::Handle part = h5::create_group(f.root(), "PartType1");
+    h5::write_dataset(part.get(), "Coordinates", std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 1}, 3);
+    h5::write_dataset(part.get(), "Velocities", std::vector<double>(9, 0.0), 3);
+    if (with_units) {  // AU, solar mass, year: G = 4 pi^2 to 1e-3 (CODATA G, IAU masses)
+      h5::Handle units = h5::create_group(f.root(), "Units");
+      h5::write_attr(units.get(), "Unit length in cgs (U_L)", 1.495978707e13);
+      h5::write_attr(units.get(), "Unit mass in cgs (U_M)", 1.98847e33);
+      h5::write_attr(units.get(), "Unit time in cgs (U_t)", 3.15576e7);
+    }
+    const std::string path = f.save(with_units ? "nbody_units.hdf5" : "nbody.hdf5");
+    const RunConfig cfg = load_hdf5_ic(path);
+    EXPECT_EQ(cfg.params.physics.gravity, GravityType::Direct);
+    EXPECT_EQ(cfg.params.physics.density, DensityMode::None);
+    EXPECT_NEAR(cfg.params.gravity.G, with_units ? 4.0 * std::numbers::pi * std::numbers::pi : 1.0, with_units ? 0.04 : 0.0);
+    const World w(cfg);
+    ASSERT_EQ(w.particles().size(), 3u);
+    for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(w.particles()[Field::Mass][i], 0.25);
+    fs::remove(path);
+  }
 }
 
 }  // namespace

@@ -23,10 +23,10 @@ TEST(SceneHelp, SodListsItsStagesParametersValuesAndReference) {
   }
   EXPECT_NE(text.find("adiabatic index"), std::string::npos);       // a description with its seed equation
   EXPECT_NE(text.find("seed 000 eq. 3.3.23"), std::string::npos);
-  EXPECT_NE(text.find("dimensionless, range [1.0001, 10]"), std::string::npos);  // unit and range of gas.gamma
+  EXPECT_NE(text.find("dimensionless, range [1.0001, 10], default 1.4"), std::string::npos);  // gas.gamma
   EXPECT_NE(text.find("scene.n_left"), std::string::npos);
   EXPECT_NE(text.find("= 800"), std::string::npos);
-  EXPECT_NE(text.find("default 400"), std::string::npos);  // the changed value shows the scene's default
+  EXPECT_NE(text.find("= 800           count, range [4, 1e+06], integer, default 400"), std::string::npos);
   EXPECT_NE(text.find("error norms"), std::string::npos);
   EXPECT_NE(text.find("L1_rho"), std::string::npos);
 }

@@ -29,6 +29,7 @@ splash)
   # headless: the PNG device, no questions asked (stdin closed); column 1 x, 3 rho (x, vx, m, rho, ...)
   (cd "$work/sod" && splash -ascii -x 1 -y 4 -dev /png particles_00004.dat < /dev/null > splash.log 2>&1); check "splash 1D" 0 $?
   ok "splash read the time" grep -q "setting time =.*0.2" "$work/sod/splash.log"
+  ok "splash read gamma" grep -Eq "setting gamma = +1\.(4|39999)" "$work/sod/splash.log"
   ok "splash found density, mass and h" grep -q "density in column  4, mass in  3, h in  5" "$work/sod/splash.log"
   ok "splash drew a PNG" test -s "$work/sod/splash.png"
   read -r w h dark colours < <($py "$here/png_pixels.py" "$work/sod/splash.png")

@@ -16,7 +16,7 @@ bool is_hdf5_path(const std::string& name);
 /// initial state is the one exported. Other files run as an ideal gas (M4, grad-h SPH, Monaghan
 /// viscosity; gas.gamma from /HydroScheme "Adiabatic index", else 5/3) in a periodic box [0, BoxSize)
 /// (scene.periodic = 0 makes it open), or as point masses under direct or tree gravity with G in the
-/// file's /Units. Refused with ConfigError: not HDF5, no /Header, several files per snapshot, a
+/// file's /Units (G = 1 without them). Refused with ConfigError: not HDF5, no /Header, several files per snapshot, a
 /// cosmological (Redshift > 0) or entropy (Flag_Entropy_ICs) IC, particle types other than 0 or 1 alone,
 /// missing or mis-shaped datasets, non-finite or negative masses, energies or smoothing lengths.
 RunConfig load_hdf5_ic(const std::string& path);

@@ -9,7 +9,7 @@ namespace sph {
 
 /// A scene as it runs with `cfg`: its description, dimension and units; the stage of every physics slot
 /// (with the options the scene accepts and the seed equations); every parameter of those stages (key,
-/// value, unit, range, the scene's default, meaning with its seed equation, live or needs a reset); the
+/// value, unit, range, the scene's default, meaning with its seed equation, whether it needs a reset); the
 /// scene's own values; its reference and its error norms. Lines of at most about 100 columns.
 std::string scene_help(const RunConfig& cfg);
 

@@ -106,7 +106,7 @@ void RunConfig::set(const std::string& key, const std::string& value, const std:
       keys.push_back("scene." + sp.name);
     }
     throw ConfigError(origin + ": unknown key '" + key + "' for scene " + scene->name + did_you_mean(key, keys) +
-                      " (its keys:" + known + ")");
+                      (known.empty() ? std::string(" (it has no scene.* keys)") : " (its keys:" + known + ")"));
   }
   const ParamInfo* info = find_param(key);
   if (!info) {

@@ -312,11 +312,15 @@ RunConfig foreign(hid_t file, hid_t header, IcData& d, int type, const std::stri
   d.spacing = std::pow(volume / static_cast<double>(d.n), 1.0 / d.dim);
 
   if (type == 1) {
+    // G in the file's units (/Units); without them the file is in code units with G = 1
+    const bool units = h5::exists(file, "Units");
+    const double G = units ? kGravityCgs * spec->units.mass_cgs * spec->units.time_cgs * spec->units.time_cgs /
+                                 std::pow(spec->units.length_cgs, 3)
+                           : 1.0;
     spec->category = "initial condition (HDF5 N-body particles)";
-    spec->description = std::to_string(d.n) + " point masses from " + file_name + " (PartType1), G from its /Units";
-    scenes::make_nbody(*spec, d.n > 2000 ? GravityType::Tree : GravityType::Direct,
-                       kGravityCgs * spec->units.mass_cgs * spec->units.time_cgs * spec->units.time_cgs /
-                           std::pow(spec->units.length_cgs, 3));
+    spec->description = std::to_string(d.n) + " point masses from " + file_name + " (PartType1), G = " + text(G) +
+                        (units ? " from its /Units" : " (no /Units: code units)");
+    scenes::make_nbody(*spec, d.n > 2000 ? GravityType::Tree : GravityType::Direct, G);
     spec->defaults.gravity.eps = 0.05 * d.spacing;  // Plummer softening: 1/20 of the mean spacing
     if (d.h.empty()) d.h.assign(d.n, 0.0);
     periodic = false;

@@ -48,10 +48,7 @@ std::string value_space(const ParamInfo& info) {
 void add_param(std::string& out, const ParamInfo& info, const Params& now, const Params* defaults) {
   const std::string value = shown(info.get(now));
   out += "  " + pad(std::string(info.key), 24) + " = " + pad(value, 12) + "  " + value_space(info);
-  if (defaults) {
-    const std::string def = shown(info.get(*defaults));
-    if (def != value) out += ", default " + def;
-  }
+  if (defaults) out += ", default " + shown(info.get(*defaults));
   out += info.live ? "" : ", needs a reset";
   out += "\n      " + std::string(info.description) + "\n";
 }
@@ -89,7 +86,7 @@ std::string scene_help(const RunConfig& cfg) {
       const double v = it == cfg.values.end() ? sp.value : it->second;
       out += "  " + pad("scene." + sp.name, 24) + " = " + pad(number(v), 12) + "  " + unit_of(sp.unit) + ", range [" +
              number(sp.min) + ", " + number(sp.max) + "]" + (sp.integer ? ", integer" : "") +
-             (v != sp.value ? ", default " + number(sp.value) : std::string()) + "\n      " + sp.description + "\n";
+             ", default " + number(sp.value) + "\n      " + sp.description + "\n";
     }
   }
 
