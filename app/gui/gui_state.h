@@ -94,6 +94,16 @@ class GuiState {
   double record_every = 0.01;
   int record_width = 1280, record_height = 720;
 
+  /// The help window (F1 or H): sph/help_text.h's scene_help for the scene on screen and the values being
+  /// edited, rebuilt only when they change.
+  struct HelpView {
+    bool open = false;
+    const SceneSpec* scene = nullptr;
+    Params params;
+    SceneValues values;
+    std::string text;
+  } help;
+
   std::uint64_t acknowledged_divergence = 0;  ///< world_serial whose divergence dialog was closed
   std::string param_error;                    ///< why the last typed parameter value was refused
 

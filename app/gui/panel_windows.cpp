@@ -46,6 +46,7 @@ void draw_panels(GuiState& s, const Layout& L, const FrameStats& stats) {
     if (ImGui::Begin("Particle inspector", nullptr, fixed)) panel_inspector(s);
     ImGui::End();
   }
+  panel_help(s);
   divergence_modal(s);
 }
 

@@ -22,5 +22,6 @@ void panel_compare(GuiState& s);      ///< A/B comparison: run B's overrides, st
 void panel_inspector(GuiState& s);    ///< the picked particle: fields, equation terms, neighbours
 void status_line(GuiState& s, const FrameStats& stats);  ///< t, dt, steps/s, neighbours, h-iterations
 void divergence_modal(GuiState& s);   ///< after a NaN/inf: which particle and step, and a reset button
+void panel_help(GuiState& s);         ///< F1 / H: `sph help SCENE` for the scene on screen, in a window
 
 }  // namespace sph::gui

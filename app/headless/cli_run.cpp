@@ -13,6 +13,8 @@
 #include "exit_codes.h"
 #include "run_output.h"
 #include "sph/config.h"
+#include "sph/ic_export.h"
+#include "sph/suggest.h"
 #include "sph/world.h"
 #ifdef SPH_HAVE_FRAMES
 #include "frame_recorder.h"
@@ -38,6 +40,11 @@ std::unique_ptr<FrameRecorder> make_recorder(const RunOptions& opt) {
   if (opt.frames.empty()) return nullptr;
   FrameOptions fo;
   fo.dir = opt.frames;
+  fo.fps = opt.fps;
+  fo.gl = gl_backend_from_environment();
+  if (!opt.gl.empty() && !parse_gl_backend(opt.gl, &fo.gl))
+    throw ConfigError("--gl " + opt.gl + ": expected osmesa, egl or auto" + did_you_mean(opt.gl, {"osmesa", "egl", "auto"}) +
+                      " (this build has: " + built_gl_backends() + ")");
   fo.every = opt.every;
   if (!(opt.every > 0.0)) throw ConfigError("--every must be > 0");
   int w = 0, h = 0;
@@ -127,6 +134,15 @@ int run_command(const RunOptions& opt) {
     std::fprintf(stderr, "sph: invalid scene: %s\n", e.what());
     return kInvalidScene;
   }
+  if ((opt.vtu || opt.splash || opt.hdf5) && opt.out.empty()) {
+    std::fprintf(stderr, "sph: %s needs --out DIR (the files go beside the CSVs)\n",
+                 opt.vtu ? "--vtu" : opt.splash ? "--splash" : "--hdf5");
+    return kUsage;
+  }
+  if (opt.hdf5 && !hdf5_unsupported(cfg.params).empty()) {
+    std::fprintf(stderr, "sph: --hdf5: scene %s: %s\n", cfg.scene->name.c_str(), hdf5_unsupported(cfg.params).c_str());
+    return kUsage;
+  }
   if (opt.threads > 0) omp_set_num_threads(opt.threads);
   const double t_end = cfg.params.time.t_end;
   std::unique_ptr<World> world_ptr, b_ptr;  // outlive the try: a run that stops still reports its warnings
@@ -150,14 +166,19 @@ int run_command(const RunOptions& opt) {
           throw ConfigError("--tree-probe " + std::to_string(opt.tree_probe) + ": scene " + cfg.scene->name + " has " +
                             std::to_string(snap.count) + " particles");
         std::string known;
-        for (const auto& f : snap.fields) known += " " + f.name;
+        std::vector<std::string> names;
+        for (const auto& f : snap.fields) {
+          known += " " + f.name;
+          names.push_back(f.name);
+        }
         if (!snap.find(fopt.color_by))
           throw ConfigError("--color-by " + fopt.color_by + ": no such field in scene " + cfg.scene->name +
-                            " (fields:" + known + ")");
+                            did_you_mean(fopt.color_by, names) + " (fields:" + known + ")");
         for (const std::string& p : render::panel_fields(snap, split_names(opt.panels)))
           if (!snap.find(p))
             throw ConfigError(std::string(flag::kPanels) + " " + opt.panels + ": no field '" + p + "' in scene " +
-                              cfg.scene->name + " (fields:" + known + "; v is vx in 1D, else speed)");
+                              cfg.scene->name + did_you_mean(p, names) + " (fields:" + known +
+                              "; v is vx in 1D, else speed)");
       }
       rec = make_recorder(fopt);  // validates the frame flags before anything is written
       if (rec && rec->view().profile_axis >= 0 && !render::draws_profile(cfg.scene->dim, rec->view().profile_axis))
@@ -171,14 +192,15 @@ int run_command(const RunOptions& opt) {
       return kUsage;
     }
 #else
-    if (!opt.frames.empty()) {
-      std::fprintf(stderr, "sph: --frames: this build has no OSMesa renderer\n");
+    if (!opt.frames.empty() || !opt.video.empty()) {
+      std::fprintf(stderr, "sph: --frames, --video: this build has no headless renderer\n");
       return kUsage;
     }
 #endif
     std::unique_ptr<RunOutput> out, out_b;  // run B's files go to OUT/B
-    if (!opt.out.empty()) out = std::make_unique<RunOutput>(opt.out, world);
-    if (!opt.out.empty() && b_ptr) out_b = std::make_unique<RunOutput>(opt.out + "/B", *b_ptr);
+    OutputOptions formats{opt.csv_comments, opt.vtu, opt.splash, opt.hdf5};
+    if (!opt.out.empty()) out = std::make_unique<RunOutput>(opt.out, world, formats);
+    if (!opt.out.empty() && b_ptr) out_b = std::make_unique<RunOutput>(opt.out + "/B", *b_ptr, formats);
     const double dt_out = cfg.params.time.dt_out > 0.0 ? cfg.params.time.dt_out : t_end;
     int next_out = 1;
     if (out) { out->write_diagnostics(world); out->write_particles(world); }
@@ -263,9 +285,13 @@ int run_command(const RunOptions& opt) {
       if (!rec->flush(&err)) throw IoError(err);  // PNGs are compressed in the background
       std::printf("%d frames in %s; make a video with:\n  %s\n", rec->frames_written(), opt.frames.c_str(),
                   rec->ffmpeg_command().c_str());
-      if (!opt.video.empty() && !rec->make_video(&err)) {
-        std::fprintf(stderr, "sph: --video: %s\n", err.c_str());
-        return kIoError;
+      if (!opt.video.empty()) {
+        if (!rec->make_video(&err)) {
+          std::fprintf(stderr, "sph: %s\n", err.c_str());
+          return kIoError;
+        }
+        std::printf("video %s (%d frames at %d/s), last frame %s\n", opt.video.c_str(), rec->frames_written(), opt.fps,
+                    rec->still_path().c_str());
       }
     }
 #endif

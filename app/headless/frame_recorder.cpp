@@ -69,9 +69,9 @@ bool on_path(const char* program) {
 
 // ---- OffscreenRenderer ---------------------------------------------------------------------------
 
-std::unique_ptr<OffscreenRenderer> OffscreenRenderer::create(std::string* err) {
+std::unique_ptr<OffscreenRenderer> OffscreenRenderer::create(std::string* err, GlBackend backend) {
   auto r = std::unique_ptr<OffscreenRenderer>(new OffscreenRenderer());
-  r->context_ = create_osmesa_context(err);
+  r->context_ = create_offscreen_context(backend, err);
   if (!r->context_) return nullptr;
   // A small target first: the renderer needs a current context to compile its shaders.
   if (!r->context_->make_current(16, 16, err)) return nullptr;
@@ -250,6 +250,10 @@ std::unique_ptr<FrameRecorder> FrameRecorder::create(const FrameOptions& o, std:
     fail(err, std::string(flag::kRange) + " must be min:max with min < max");
     return nullptr;
   }
+  if (!o.video.empty() && !o.video.ends_with(".mp4") && !o.video.ends_with(".webm") && !o.video.ends_with(".gif")) {
+    fail(err, std::string(flag::kVideo) + " " + o.video + ": the name must end in .mp4, .webm or .gif");
+    return nullptr;
+  }
   if (o.fps <= 0) {
     fail(err, std::string(flag::kFps) + " must be positive");
     return nullptr;
@@ -265,7 +269,7 @@ std::unique_ptr<FrameRecorder> FrameRecorder::create(const FrameOptions& o, std:
                   (ec ? ": " + ec.message() : std::string()));
     return nullptr;
   }
-  auto renderer = OffscreenRenderer::create(err);
+  auto renderer = OffscreenRenderer::create(err, o.gl);
   if (!renderer) return nullptr;
   return std::unique_ptr<FrameRecorder>(new FrameRecorder(o, std::move(renderer)));
 }
@@ -302,10 +306,20 @@ bool FrameRecorder::write_frame(const render::FrameScene& scene, std::string* er
 
 std::string FrameRecorder::ffmpeg_command() const {
   const std::string pattern = (std::filesystem::path(options_.dir) / "frame_%05d.png").string();
+  const std::string out = shell_quote(options_.video.empty() ? std::string("video.mp4") : options_.video);
+  const std::string in = "ffmpeg -y -loglevel error -framerate " + std::to_string(options_.fps) + " -i " +
+                         shell_quote(pattern);
+  if (options_.video.ends_with(".gif"))  // one palette made for these frames: flat colours stay flat
+    return in + " -filter_complex \"[0:v]split[a][b];[a]palettegen=stats_mode=full[p];[b][p]paletteuse=dither=none\" " +
+           out;
+  if (options_.video.ends_with(".webm")) return in + " -c:v libvpx-vp9 -pix_fmt yuv420p -b:v 0 -crf 30 " + out;
   // yuv420p: playable everywhere (needs even sizes, checked in create); crf 18: visually lossless.
-  return "ffmpeg -y -loglevel error -framerate " + std::to_string(options_.fps) + " -i " + shell_quote(pattern) +
-         " -c:v libx264 -pix_fmt yuv420p -crf 18 -movflags +faststart " +
-         shell_quote(options_.video.empty() ? std::string("video.mp4") : options_.video);
+  return in + " -c:v libx264 -pix_fmt yuv420p -crf 18 -movflags +faststart " + out;
+}
+
+std::string FrameRecorder::still_path() const {
+  std::filesystem::path p(options_.video.empty() ? std::string("video.mp4") : options_.video);
+  return (p.parent_path() / (p.stem().string() + "_last.png")).string();
 }
 
 bool FrameRecorder::make_video(std::string* err) {
@@ -324,6 +338,13 @@ bool FrameRecorder::make_video(std::string* err) {
   if (status != 0) {
     fail(err, std::string(flag::kVideo) + ": ffmpeg failed (status " + std::to_string(status) + "): " +
                   ffmpeg_command());
+    return false;
+  }
+  std::error_code ec;
+  std::filesystem::copy_file(frame_path(frames_ - 1), still_path(), std::filesystem::copy_options::overwrite_existing,
+                             ec);
+  if (ec) {
+    fail(err, std::string(flag::kVideo) + ": cannot write the still " + still_path() + ": " + ec.message());
     return false;
   }
   return true;

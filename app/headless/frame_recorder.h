@@ -1,5 +1,5 @@
-// Headless frames: renders snapshots off-screen (OSMesa) and writes numbered PNG files, optionally
-// joined into a video by ffmpeg afterwards.
+// Headless frames: renders snapshots off-screen (OSMesa or EGL) and writes numbered PNG files, optionally
+// joined into a video (or an animated GIF) by ffmpeg afterwards, with a still of the last frame.
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "frame_scene.h"
-#include "osmesa_context.h"
+#include "offscreen_context.h"
 #include "renderer.h"
 #include "view_settings.h"
 
@@ -44,14 +44,16 @@ struct FrameOptions {
   bool log_scale = false;     ///< colour by log10 of the field (--log)
   std::string profile_axis = "off";  ///< 2D: "x" or "y" (profile of the field against it), or "off"
   std::vector<std::string> panels;   ///< profiles: one panel per field (ViewSettings::panels)
-  std::string video;          ///< mp4 path to make from the frames, or empty
+  std::string video;          ///< .mp4 (H.264), .webm or .gif (animated, for slides) to make, or empty
   int fps = 30;               ///< video frame rate [frames per second]
+  GlBackend gl = GlBackend::Auto;  ///< off-screen context (--gl)
 };
 
 /// An off-screen context plus a renderer: snapshot in, RGBA pixels out.
 class OffscreenRenderer {
  public:
-  static std::unique_ptr<OffscreenRenderer> create(std::string* err);
+  /// A context of `backend` (default: SPH_GL from the environment, else auto) and a renderer in it.
+  static std::unique_ptr<OffscreenRenderer> create(std::string* err, GlBackend backend = gl_backend_from_environment());
   ~OffscreenRenderer();  ///< frees the GL objects with its own context current
   /// Renders into an RGBA8 buffer of width*height*4 bytes, rows top-down.
   bool render(const sph::Snapshot& snap, const render::ViewSettings& view, int width, int height,
@@ -103,10 +105,13 @@ class FrameRecorder {
   int frames_written() const { return frames_; }
   std::string frame_path(int index) const;
 
-  /// The ffmpeg command line that turns the frames into options.video.
+  /// The ffmpeg command line that turns the frames into options.video (a GIF gets its own palette).
   std::string ffmpeg_command() const;
-  /// Flushes, then runs ffmpeg_command() if options.video is set (true and nothing done otherwise).
+  /// Flushes, then runs ffmpeg_command() if options.video is set (true and nothing done otherwise),
+  /// and copies the last frame beside the video as its still (still_path()).
   bool make_video(std::string* err);
+  /// VIDEO without its extension + "_last.png": the last frame, for a poster or a slide.
+  std::string still_path() const;
 
   const FrameOptions& options() const { return options_; }
   render::ViewSettings& view() { return view_; }  ///< cameras, point sizes: adjustable before frames

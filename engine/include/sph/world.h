@@ -80,6 +80,7 @@ class World {
   const Kernel& kernel() const { return kernel_; }
   double eta() const;  ///< effective eta (the kernel's default if kernel.eta == 0)
   double spacing() const { return spacing_; }  ///< the scene's initial particle spacing
+  double wall_strength() const { return wall_strength_; }  ///< the scene's Lennard-Jones D (walls.D = 0)
   const DensityStats& density_stats() const;
   std::size_t correction_fallbacks() const;  ///< particles whose gradient correction fell back (last evaluation)
   std::int64_t evaluations() const { return evaluations_; }
