@@ -26,6 +26,9 @@
 #include "unique_path.h"
 #include "sph/config.h"
 #include "sph/stepper.h"
+#include "overrides_text.h"
+#include "view_picking.h"
+#include "view_scene.h"
 #include "view_target.h"
 #include "window.h"
 
@@ -78,6 +81,37 @@ void handle_recording(GuiState& s, Recorder& rec) {
   s.requests.start_recording = s.requests.stop_recording = false;
 }
 
+/// Test hook --click-particle FRAME:ID: the mouse on particle ID's dot, pressed at FRAME, released at the
+/// next frame (ImGui's input for this frame, after the GLFW backend filled it).
+void click_hook(const GuiOptions& o, long long frame, const ParticleView& view, const Rect& r) {
+  for (const std::string& c : o.click_particles) {
+    const auto colon = c.find(':');
+    const long long at = std::stoll(c.substr(0, colon)), id = std::stoll(c.substr(colon + 1));
+    if (frame != at && frame != at + 1) continue;
+    if (const auto pos = view.window_pos_of(0, static_cast<std::uint32_t>(id), r)) {
+      ImGuiIO& io = ImGui::GetIO();
+      io.MousePos = ImVec2((*pos)[0], (*pos)[1]);
+      io.MouseDown[0] = frame == at;
+    }
+  }
+}
+
+/// What the view showed last, for scripted checks: its legend rows and the inspected particle's numbers
+/// (17 digits: a test recomputes them with World::inspect).
+void report_view(const ParticleView& view, const StepperFrame& f) {
+  std::string rows;
+  for (const std::string& r : view.layout().legend_rows) rows += (rows.empty() ? "" : " | ") + r;
+  if (!rows.empty()) std::printf("sph-gui: view legend: %s\n", rows.c_str());
+  if (!f.inspection) return;
+  const Inspection& in = *f.inspection;
+  std::printf("sph-gui: inspected particle %lld at step %lld, t = %.17g: x = %.17g, rho = %.17g, u = %.17g, "
+              "a_x = %.17g, du/dt = %.17g\n",
+              static_cast<long long>(in.id), static_cast<long long>(in.step), in.t, in.x.x, in.rho, in.u, in.a_total.x,
+              in.dudt_total);
+  for (const InspectTerm& t : in.terms)
+    std::printf("sph-gui: term %s: a_x = %.17g, du/dt = %.17g\n", t.name.c_str(), t.a.x, t.dudt);
+}
+
 }  // namespace
 
 int run_gui(const GuiOptions& o) {
@@ -111,6 +145,9 @@ int run_gui(const GuiOptions& o) {
   FrameStats stats(o.max_fps);
   EngineRate engine_rate;
   if (o.tree_probe >= 0) state.set_tree_probe(o.tree_probe);
+  if (!o.compare_sets.empty()) state.set_compare(o.compare_sets);
+  if (o.inspect >= 0) state.inspect(o.inspect);
+  state.view.panels = split_overrides(o.panels);
   if (!o.record.empty()) {  // the stepper already records; open the directory
     state.record_dir = o.record;
     state.record_every = o.record_every;
@@ -124,6 +161,8 @@ int run_gui(const GuiOptions& o) {
   int rc = kOk;
   std::uint64_t last_ui = 0;  // draw-data fingerprint of the last drawn frame
   int last_fw = 0, last_fh = 0;
+  bool end_shown = false;     // --quit-at-end: the view showed the state at t_end (quit at the next frame)
+  Rect last_view_rect;        // where the view was drawn last frame [framebuffer px]
 
   while (!window->should_close()) {
     glfwPollEvents();
@@ -137,7 +176,7 @@ int run_gui(const GuiOptions& o) {
     const StepperFrame* f = state.frame();
     if (f) engine_rate.see(*f);
     if (f && state.fresh() && f->record_index >= 0 && recorder.active() &&
-        !recorder.write(view, f->snapshot, state.view, state.record_width, state.record_height, &err)) {
+        !recorder.write(view, view_scene(*f), state.view, state.record_width, state.record_height, &err)) {
       state.notify("recording stopped: " + err, true);
       state.requests.stop_recording = true;
       rc = kIoError;
@@ -145,14 +184,17 @@ int run_gui(const GuiOptions& o) {
 
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
+    click_hook(o, stats.frames(), view, last_view_rect);
     ImGui::NewFrame();
     const ImGuiIO& io = ImGui::GetIO();
-    const Layout L = compute_layout(static_cast<int>(io.DisplaySize.x), static_cast<int>(io.DisplaySize.y),
-                                    ImGui::GetFontSize());
+    Layout L = compute_layout(static_cast<int>(io.DisplaySize.x), static_cast<int>(io.DisplaySize.y),
+                              ImGui::GetFontSize());
+    if (state.inspect_id >= 0) carve_inspector(L, ImGui::GetFontSize());
     draw_panels(state, L, stats);
     if (!io.WantTextInput && std::count(state.key_presses.begin(), state.key_presses.end(), GLFW_KEY_F12))
       state.requests.screenshot = true;
     if (f) view.interact(to_framebuffer(L.view), f->snapshot, &state.view);
+    if (f) pick_particles(state, view, to_framebuffer(L.view));
     if (!f || state.building()) {  // World construction can take seconds (10^5 particles)
       const std::string text = "building " + state.scene_name() + " ...";
       ImGui::GetBackgroundDrawList()->AddText(ImVec2(L.view.x + 20.f, L.view.y + L.view.h - 2.f * ImGui::GetFontSize()),
@@ -165,16 +207,18 @@ int run_gui(const GuiOptions& o) {
     int fw = 0, fh = 0;
     window->framebuffer_size(&fw, &fh);
     const Rect view_rect = to_framebuffer(L.view);
+    last_view_rect = view_rect;
     const std::uint64_t ui = draw_data_hash(*ImGui::GetDrawData());
-    const bool last = o.quit_after_frames > 0 && stats.frames() + 1 >= o.quit_after_frames;
+    const bool last = (o.quit_after_frames > 0 && stats.frames() + 1 >= o.quit_after_frames) || end_shown;
+    const render::FrameScene scene = f ? view_scene(*f) : render::FrameScene{};
     const bool draw = o.always_redraw || stats.frames() < 2 || ui != last_ui || fw != last_fw || fh != last_fh ||
-                      window->take_damage() || (f && view.stale(f->serial, state.view, view_rect)) ||
+                      window->take_damage() || (f && view.stale(f->serial, state.view, scene.highlight, view_rect)) ||
                       state.requests.screenshot || (last && !o.screenshot.empty());
     if (draw) {
       glViewport(0, 0, fw, fh);
       glClearColor(0.09f, 0.09f, 0.10f, 1.f);  // the panels' background (they draw none themselves)
       glClear(GL_COLOR_BUFFER_BIT);
-      if (f) view.draw(f->snapshot, f->serial, state.view, view_rect, fh);
+      if (f) view.draw(scene, f->serial, state.view, view_rect, fh);
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     }
     last_ui = ui;
@@ -197,6 +241,9 @@ int run_gui(const GuiOptions& o) {
     stats.frame_done(draw);
 
     if (last) break;
+    end_shown = o.quit_at_end && f && f->at_end && !state.building() &&
+                (o.compare_sets.empty() || f->comparing) && (state.inspect_id < 0 || (f->inspection &&
+                f->inspection->step == f->snapshot.step)) && !view.stale(f->serial, state.view, scene.highlight, view_rect);
   }
 
   const StepperFrame* f = state.frame();
@@ -208,6 +255,7 @@ int run_gui(const GuiOptions& o) {
               so.threads);
   if (recorder.frames() > 0) std::printf("sph-gui: %d frames in %s/\n", recorder.frames(), recorder.dir().c_str());
   if (f) std::printf("sph-gui: last state: step %lld, t = %.9g\n", static_cast<long long>(f->snapshot.step), f->snapshot.t);
+  if (f) report_view(view, *f);
   return rc;
 }
 

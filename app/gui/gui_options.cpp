@@ -36,6 +36,14 @@ int parse_options(int argc, char** argv, GuiOptions* out) {
   app.add_option("--record-every", o.record_every, "simulated time between recorded frames")
       ->check(CLI::PositiveNumber)->capture_default_str();
   app.add_option("--record-size", o.record_size, "recorded frame size WIDTHxHEIGHT")->capture_default_str();
+  app.add_option("--compare-set", o.compare_sets,
+                 "start an A/B comparison: run B is this run with key=value changed (repeatable), e.g. kernel.type=M6");
+  app.add_option("--inspect", o.inspect, "open the particle inspector on this particle id")->check(CLI::NonNegativeNumber);
+  app.add_option("--panels", o.panels, "profiles: one panel per field, e.g. rho,v,p,u (v: v_x in 1D)");
+  app.add_flag("--quit-at-end", o.quit_at_end,
+               "test hook: quit (after --screenshot) once the run has stopped at t_end and the view shows it");
+  app.add_option("--click-particle", o.click_particles,
+                 "test hook: FRAME:ID clicks particle ID's dot in the view at displayed frame FRAME (repeatable)");
   app.add_option("--tap-keys", o.tap_keys,
                  "test hook: FRAME:KEYS taps each key of KEYS (S, R, ' ' ...) at displayed frame FRAME (repeatable)");
   try {
@@ -54,6 +62,14 @@ int parse_options(int argc, char** argv, GuiOptions* out) {
     const auto colon = t.find(':');
     if (colon == std::string::npos || colon == 0 || t.find_first_not_of("0123456789") != colon) {
       std::fprintf(stderr, "sph-gui: --tap-keys %s: expected FRAME:KEYS, e.g. 5:SSS\n", t.c_str());
+      return 2;
+    }
+  }
+  for (const std::string& c : o.click_particles) {
+    const auto colon = c.find(':');
+    if (colon == std::string::npos || colon == 0 || colon + 1 == c.size() ||
+        c.find_first_not_of("0123456789:") != std::string::npos || c.find(':', colon + 1) != std::string::npos) {
+      std::fprintf(stderr, "sph-gui: --click-particle %s: expected FRAME:ID, e.g. 20:300\n", c.c_str());
       return 2;
     }
   }

@@ -25,6 +25,15 @@ struct GuiOptions {
   /// between the same two frames (the quick taps a key-state poll would lose).
   std::vector<std::string> tap_keys;
   long long tree_probe = -1;         ///< start with the tree overlay of this particle (tree-gravity scenes)
+  std::vector<std::string> compare_sets;  ///< start an A/B comparison: run B with these key=value overrides
+  long long inspect = -1;            ///< open the particle inspector on this id
+  std::string panels;                ///< profiles: one panel per field, comma-separated ("rho,v,p,u")
+  /// Test hook: quit (after --screenshot) once the run is at t_end and the view shows that state (and
+  /// the inspection and the comparison asked for have arrived); --quit-after-frames stays a limit.
+  bool quit_at_end = false;
+  /// Test hook: FRAME:ID presses the left mouse button on particle ID's dot at displayed frame FRAME and
+  /// releases it at the next (a click through the view's picking, as a user's).
+  std::vector<std::string> click_particles;
 };
 
 /// Parses argv. Returns -1 to go on, or the exit code (0 after --help, 2 on a usage error).

@@ -115,6 +115,11 @@ void GuiState::set_tree_probe(std::int64_t k) {
   stepper_.set_tree_probe(k);
 }
 
+void GuiState::inspect(std::int64_t id) {
+  inspect_id = id;
+  stepper_.set_inspect(id);
+}
+
 void GuiState::notify(std::string text, bool error) {
   message = std::move(text);
   message_is_error = error;

@@ -67,6 +67,12 @@ class GuiState {
   /// Frames carry particle k's Barnes-Hut walk (the tree overlay); k < 0 turns it off.
   void set_tree_probe(std::int64_t k);
   void set_record_interval(double every) { stepper_.set_record_interval(every); }
+  /// A/B comparison: both runs restart from t = 0, run B with these overrides (key=value); empty: stop.
+  void set_compare(const std::vector<std::string>& overrides) { stepper_.set_compare(overrides); }
+  /// The particle inspector shows particle `id` (< 0: closes it).
+  void inspect(std::int64_t id);
+  std::int64_t inspect_id = -1;    ///< as last sent (-1: the inspector is closed)
+  std::string compare_text = "kernel.type=M6";  ///< the compare panel's overrides, comma-separated
   double real_time_factor = 0.0;   ///< as last sent (0 = as fast as possible)
   bool stop_at_end = true;         ///< as last sent
   std::int64_t tree_probe = -1;    ///< as last sent (-1: no tree overlay)
@@ -87,6 +93,16 @@ class GuiState {
   std::string record_dir = "frames";
   double record_every = 0.01;
   int record_width = 1280, record_height = 720;
+
+  /// The help window (F1 or H): sph/help_text.h's scene_help for the scene on screen and the values being
+  /// edited, rebuilt only when they change.
+  struct HelpView {
+    bool open = false;
+    const SceneSpec* scene = nullptr;
+    Params params;
+    SceneValues values;
+    std::string text;
+  } help;
 
   std::uint64_t acknowledged_divergence = 0;  ///< world_serial whose divergence dialog was closed
   std::string param_error;                    ///< why the last typed parameter value was refused

@@ -23,4 +23,10 @@ Layout compute_layout(int width, int height, float line_height) {
   return L;
 }
 
+void carve_inspector(Layout& L, float line_height) {
+  const float w = std::round(std::min(0.45f * L.view.w, 30.f * line_height));
+  L.view.w -= w;
+  L.inspector = {L.view.x + L.view.w, L.view.y, w, L.view.h};
+}
+
 }  // namespace sph::gui

@@ -16,7 +16,11 @@ struct Layout {
   Rect diagnostics;  ///< energies, momentum, L1 error against time
   Rect kernel;       ///< kernel explorer
   Rect status;       ///< one status line
+  Rect inspector;    ///< the particle inspector, when open (carve_inspector); empty otherwise
 };
+
+/// Gives the particle inspector a column at the right of the view (about 30 lines of text wide).
+void carve_inspector(Layout& L, float line_height);
 
 /// line_height: the UI font's height [px].
 Layout compute_layout(int width, int height, float line_height);

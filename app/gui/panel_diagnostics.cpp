@@ -9,6 +9,7 @@
 
 #include "curve_plot.h"
 #include "diag_text.h"
+#include "frame_scene.h"
 #include "history_plot.h"
 #include "panels.h"
 
@@ -24,6 +25,19 @@ void sparkline(const char* id, const std::vector<HistorySample>& h, std::vector<
                float height) {
   const float t0 = h.empty() ? 0.f : static_cast<float>(h.front().t), t1 = h.empty() ? 1.f : static_cast<float>(h.back().t);
   curve_plot(id, "t", t0, t1, {{title, IM_COL32(200, 200, 210, 255), std::move(y), false}}, ImVec2(-1.f, height), false);
+}
+
+ImU32 run_colour(int run) {
+  const render::Rgba c = render::kRunColors[run];
+  return IM_COL32(static_cast<int>(255 * c.r), static_cast<int>(255 * c.g), static_cast<int>(255 * c.b), 255);
+}
+
+/// A comparison: one quantity of both runs against t on one set of axes, A solid, B dashed.
+void both_runs(const char* id, const std::string& name, std::vector<float> a, std::vector<float> b,
+               const std::vector<HistorySample>& h, float height) {
+  const float t0 = h.empty() ? 0.f : static_cast<float>(h.front().t), t1 = h.empty() ? 1.f : static_cast<float>(h.back().t);
+  curve_plot(id, "t", t0, t1, {{"A " + name, run_colour(0), std::move(a), false}, {"B " + name, run_colour(1), std::move(b), true}},
+             ImVec2(-1.f, height), false);
 }
 
 }  // namespace
@@ -51,6 +65,13 @@ void panel_diagnostics(GuiState& s) {
         "particles whose gradient correction was ill-conditioned and fell back to L = I");
   for (std::size_t k = 0; k < f->ref_columns.size() && k < f->ref_values.size(); ++k)
     rows.push_back({f->ref_columns[k].name, value_text(f->ref_values[k], 5), f->ref_columns[k].description});
+  const bool compare = f->comparing && f->compare.history.size() == h.size();
+  if (compare) {  // run B's energy and primary error beside A's
+    add(rows, "B E_tot", f->compare.diagnostics.E_tot, 6, "run B's total energy");
+    const std::size_t k = static_cast<std::size_t>(std::max(0, f->ref_primary));
+    if (f->ref_primary >= 0 && k < f->compare.ref_values.size())
+      rows.push_back({"B " + f->ref_columns[k].name, value_text(f->compare.ref_values[k], 5), "run B's error"});
+  }
   // Columns as wide as their widest text, so that no value runs into the plots.
   const DiagWidths w = diag_widths(rows, [](const std::string& t) { return ImGui::CalcTextSize(t.c_str()).x; });
   const float pad = ImGui::GetStyle().CellPadding.x;
@@ -93,7 +114,10 @@ void panel_diagnostics(GuiState& s) {
   if (err_plot) {
     const std::size_t k = static_cast<std::size_t>(f->ref_primary);
     const double now = k < f->ref_values.size() ? f->ref_values[k] : std::nan("");
-    sparkline("err", h, resample_ref(h, k, 240), plot_title(f->ref_columns[k].name, now, *f), ph);
+    if (compare)
+      both_runs("err", f->ref_columns[k].name, resample_ref(h, k, 240), resample_ref(f->compare.history, k, 240), h, ph);
+    else
+      sparkline("err", h, resample_ref(h, k, 240), plot_title(f->ref_columns[k].name, now, *f), ph);
   }
   {  // the energies on one set of axes, as seed 003's figures show them (the sparkline below magnifies E_tot)
     const float t0 = h.empty() ? 0.f : static_cast<float>(h.front().t), t1 = h.empty() ? 1.f : static_cast<float>(h.back().t);
@@ -101,9 +125,19 @@ void panel_diagnostics(GuiState& s) {
                               {"E_int", IM_COL32(255, 110, 110, 255), resample(h, &HistorySample::E_int, 240), false},
                               {"E_pot", IM_COL32(120, 200, 255, 255), resample(h, &HistorySample::E_pot, 240), false},
                               {"E_tot", IM_COL32(230, 230, 230, 255), resample(h, &HistorySample::E_tot, 240), true}};
+    if (compare)  // run B's energies dashed, in the same colours
+      for (std::size_t c = 0; c < 3; ++c)
+        curves.push_back({"B " + curves[c].label, curves[c].color,
+                          resample(f->compare.history, c == 0 ? &HistorySample::E_kin : c == 1 ? &HistorySample::E_int
+                                                                                                : &HistorySample::E_pot, 240),
+                          true});
     curve_plot("energies", "t", t0, t1, curves, ImVec2(-1.f, ph));
   }
-  sparkline("E_tot", h, resample(h, &HistorySample::E_tot, 240), plot_title("E_tot", d.E_tot, *f), ph);
+  if (compare)
+    both_runs("E_tot", "E_tot", resample(h, &HistorySample::E_tot, 240), resample(f->compare.history, &HistorySample::E_tot, 240),
+              h, ph);
+  else
+    sparkline("E_tot", h, resample(h, &HistorySample::E_tot, 240), plot_title("E_tot", d.E_tot, *f), ph);
   sparkline("|P|", h, resample(h, &HistorySample::P, 240), plot_title("|P|", P, *f), ph);
   if (!h.empty()) ImGui::TextDisabled("against t = %.4g ... %.4g  (%zu samples)", h.front().t, h.back().t, h.size());
   ImGui::EndTable();

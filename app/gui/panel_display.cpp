@@ -9,6 +9,7 @@
 
 #include "colormap.h"
 #include "profile_axis.h"
+#include "profile_view.h"
 #include "trails.h"
 #include "panels.h"
 
@@ -143,6 +144,14 @@ void panel_display(GuiState& s) {
       if (ImGui::IsItemHovered())
         ImGui::SetTooltip("The scene's exact or reference curve of the plotted field along this axis, if it has one");
     }
+    std::vector<std::string> four;  // rho, v, p, u: those this scene has
+    for (const char* name : {"rho", "v", "p", "u"})
+      if (snap.find(render::panel_fields(snap, {name}).front())) four.emplace_back(name);
+    bool panels = !v.panels.empty();
+    if (four.size() > 1 && ImGui::Checkbox("panels: rho, v, p, u", &panels)) v.panels = panels ? four : std::vector<std::string>{};
+    if (four.size() > 1 && ImGui::IsItemHovered())
+      ImGui::SetTooltip("One profile per field with its exact curve, as the seed documents show shock tubes;\n"
+                        "the dots keep the colour of the colour-by field.");
     ImGui::SliderFloat("dot size", &v.point_px, 1.f, 8.f, "%.1f px");
   } else {
     bool by_h = v.size_mode == render::SizeMode::Smoothing;

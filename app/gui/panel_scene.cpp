@@ -27,6 +27,10 @@ void panel_scene(GuiState& s) {
     }
     ImGui::EndCombo();
   }
+  ImGui::SameLine();
+  if (ImGui::SmallButton("Help")) s.help.open = !s.help.open;
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("The scene's stages, every parameter (unit, range, default, seed equation),\n"
+                                                "its reference and error norms: what `sph help SCENE` prints (F1 or H)");
   if (current) {
     ImGui::PushTextWrapPos(0.f);
     ImGui::TextDisabled("%s: %s", current->category.c_str(), describe_scene(*current, f->config.values).c_str());
@@ -43,7 +47,8 @@ void panel_scene(GuiState& s) {
       s.notify(e.what(), true);
     }
   }
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("A JSON scene file: {\"scene\": NAME, \"params\": {key: value, ...}}");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("A JSON scene file: {\"scene\": NAME, \"params\": {key: value, ...}},\n"
+                                                "or an HDF5 initial condition in the SWIFT/GADGET layout (.hdf5)");
   if (s.message_is_error && !s.message.empty()) {
     ImGui::PushTextWrapPos(0.f);
     ImGui::TextColored(ImVec4(1.f, 0.45f, 0.45f, 1.f), "%s", s.message.c_str());

@@ -26,6 +26,7 @@ void draw_panels(GuiState& s, const Layout& L, const FrameStats& stats) {
     if (ImGui::CollapsingHeader("Run", ImGuiTreeNodeFlags_DefaultOpen)) panel_run(s);
     if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) panel_params(s);
     if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) panel_display(s);
+    if (ImGui::CollapsingHeader("Compare (A/B)")) panel_compare(s);
     if (ImGui::CollapsingHeader("Convergence study")) panel_converge(s);
     ImGui::PopItemWidth();
   }
@@ -40,6 +41,12 @@ void draw_panels(GuiState& s, const Layout& L, const FrameStats& stats) {
   if (ImGui::Begin("##status", nullptr, fixed | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar))
     status_line(s, stats);
   ImGui::End();
+  if (L.inspector.w > 0.f) {
+    place(L.inspector);
+    if (ImGui::Begin("Particle inspector", nullptr, fixed)) panel_inspector(s);
+    ImGui::End();
+  }
+  panel_help(s);
   divergence_modal(s);
 }
 

@@ -18,7 +18,10 @@ void panel_display(GuiState& s);      ///< colour by, colour map, range, particl
 void panel_diagnostics(GuiState& s);  ///< energies, momentum, L1 error against time
 void panel_converge(GuiState& s);     ///< convergence study of the current scene (sph converge)
 void panel_kernel(GuiState& s);       ///< kernel explorer: W(q), dW/dq against the Gaussian
+void panel_compare(GuiState& s);      ///< A/B comparison: run B's overrides, start and stop
+void panel_inspector(GuiState& s);    ///< the picked particle: fields, equation terms, neighbours
 void status_line(GuiState& s, const FrameStats& stats);  ///< t, dt, steps/s, neighbours, h-iterations
 void divergence_modal(GuiState& s);   ///< after a NaN/inf: which particle and step, and a reset button
+void panel_help(GuiState& s);         ///< F1 / H: `sph help SCENE` for the scene on screen, in a window
 
 }  // namespace sph::gui

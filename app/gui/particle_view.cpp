@@ -23,7 +23,8 @@ bool same_view(const render::ViewSettings& a, const render::ViewSettings& b) {
          o.distance == q.distance && o.zoom == q.zoom && o.fov_deg == q.fov_deg && o.up_axis == q.up_axis &&
          a.size_mode == b.size_mode && a.h_scale == b.h_scale && a.point_px == b.point_px &&
          a.min_radius_px == b.min_radius_px && a.show_exact == b.show_exact && a.show_walls == b.show_walls &&
-         a.show_outlines == b.show_outlines && a.profile_axis == b.profile_axis && a.text_scale == b.text_scale;
+         a.show_outlines == b.show_outlines && a.profile_axis == b.profile_axis && a.text_scale == b.text_scale &&
+         a.panels == b.panels;
 }
 
 bool ParticleView::init(std::string* err) { return renderer_.init(&Window::get_proc, err); }
@@ -81,25 +82,26 @@ void ParticleView::interact(const Rect& r, const sph::Snapshot& snap, render::Vi
   }
 }
 
-bool ParticleView::stale(std::uint64_t serial, const render::ViewSettings& view, const Rect& r) const {
-  if (!drawn_ || !same_view(view, drawn_view_) || target_.width() != static_cast<int>(r.w) ||
-      target_.height() != static_cast<int>(r.h))
+bool ParticleView::stale(std::uint64_t serial, const render::ViewSettings& view, const render::Highlight& highlight,
+                         const Rect& r) const {
+  if (!drawn_ || !same_view(view, drawn_view_) || !(highlight == drawn_highlight_) ||
+      target_.width() != static_cast<int>(r.w) || target_.height() != static_cast<int>(r.h))
     return true;
   const double since = std::chrono::duration<double>(std::chrono::steady_clock::now() - drawn_at_).count();
   return serial != drawn_serial_ && since >= std::max(min_interval_, 3.0 * render_cost_);
 }
 
-void ParticleView::draw(const sph::Snapshot& snap, std::uint64_t serial, const render::ViewSettings& view,
+void ParticleView::draw(const render::FrameScene& scene, std::uint64_t serial, const render::ViewSettings& view,
                         const Rect& r, int fb_height) {
   const int w = static_cast<int>(r.w), h = static_cast<int>(r.h);
   if (w <= 0 || h <= 0) return;
-  const bool redraw = stale(serial, view, r);
+  const bool redraw = stale(serial, view, scene.highlight, r);
   std::string err;
   if (!target_.resize(w, h, &err)) return;
   if (redraw) {
     const auto t0 = std::chrono::steady_clock::now();
     target_.bind();
-    renderer_.render(snap, view, w, h);
+    renderer_.render(scene, view, w, h);
     ViewTarget::finish();  // so that the cost below includes the rasterisation
     ViewTarget::unbind();
     drawn_ = true;
@@ -108,19 +110,37 @@ void ParticleView::draw(const sph::Snapshot& snap, std::uint64_t serial, const r
     render_cost_ = render_cost_ > 0.0 ? 0.8 * render_cost_ + 0.2 * cost : cost;
     drawn_serial_ = serial;
     drawn_view_ = view;
+    drawn_highlight_ = scene.highlight;
   }
   target_.blit_to_window(static_cast<int>(r.x), static_cast<int>(r.y), fb_height);
 }
 
-bool ParticleView::render_rgba(const sph::Snapshot& snap, const render::ViewSettings& view, int width, int height,
-                               std::vector<std::uint8_t>* rgba, std::string* err) {
+bool ParticleView::render_rgba(const render::FrameScene& scene, const render::ViewSettings& view, int width,
+                               int height, std::vector<std::uint8_t>* rgba, std::string* err) {
   if (!record_target_.resize(width, height, err)) return false;
   record_target_.bind();
-  renderer_.render(snap, view, width, height);
+  renderer_.render(scene, view, width, height);
   record_target_.read_rgba(rgba);
   ViewTarget::unbind();
   drawn_ = false;  // the renderer's last layout now belongs to the recorded frame
   return true;
+}
+
+std::optional<render::Picked> ParticleView::particle_under_mouse(const Rect& r) const {
+  if (!drawn_) return std::nullopt;  // the renderer's last frame is not the one on screen
+  const ImGuiIO& io = ImGui::GetIO();
+  const float sx = io.DisplayFramebufferScale.x, sy = io.DisplayFramebufferScale.y;
+  const float mx = io.MousePos.x * sx - r.x, my = io.MousePos.y * sy - r.y;
+  if (mx < 0.f || my < 0.f || mx >= r.w || my >= r.h) return std::nullopt;
+  return renderer_.pick(mx, my, 6.f * sx);
+}
+
+std::optional<std::array<float, 2>> ParticleView::window_pos_of(int run, std::uint32_t index, const Rect& r) const {
+  if (!drawn_) return std::nullopt;
+  const auto p = renderer_.pixel_of(run, index);
+  if (!p) return std::nullopt;
+  const ImGuiIO& io = ImGui::GetIO();
+  return std::array<float, 2>{(r.x + (*p)[0]) / io.DisplayFramebufferScale.x, (r.y + (*p)[1]) / io.DisplayFramebufferScale.y};
 }
 
 }  // namespace sph::gui

@@ -4,11 +4,14 @@
 // Mouse: 2D drag pans and the wheel zooms about the cursor; 3D drag orbits and the wheel zooms;
 // double-click fits the view again.
 #pragma once
+#include <array>
 #include <chrono>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "frame_scene.h"
 #include "layout.h"
 #include "renderer.h"
 #include "view_settings.h"
@@ -31,14 +34,19 @@ class ParticleView {
   bool init(std::string* err);
   /// Mouse interaction over `r` (framebuffer px) when ImGui does not want the mouse.
   void interact(const Rect& r, const sph::Snapshot& snap, render::ViewSettings* view);
-  /// The off-screen view would be redrawn by draw() (new snapshot, view settings or size).
-  bool stale(std::uint64_t serial, const render::ViewSettings& view, const Rect& r) const;
-  /// Redraws if needed (serial identifies the snapshot) and blits into `r` of a window fb_height tall.
-  void draw(const sph::Snapshot& snap, std::uint64_t serial, const render::ViewSettings& view, const Rect& r,
+  /// The off-screen view would be redrawn by draw() (new snapshot, view settings, highlight or size).
+  bool stale(std::uint64_t serial, const render::ViewSettings& view, const render::Highlight& highlight,
+             const Rect& r) const;
+  /// Redraws if needed (serial identifies the snapshots) and blits into `r` of a window fb_height tall.
+  void draw(const render::FrameScene& scene, std::uint64_t serial, const render::ViewSettings& view, const Rect& r,
             int fb_height);
-  /// Renders the snapshot at width x height and reads it back (RGBA8, rows top-down): recording.
-  bool render_rgba(const sph::Snapshot& snap, const render::ViewSettings& view, int width, int height,
+  /// Renders the scene at width x height and reads it back (RGBA8, rows top-down): recording.
+  bool render_rgba(const render::FrameScene& scene, const render::ViewSettings& view, int width, int height,
                    std::vector<std::uint8_t>* rgba, std::string* err);
+  /// The particle under the mouse in the view drawn into `r` (framebuffer px), within a few pixels.
+  std::optional<render::Picked> particle_under_mouse(const Rect& r) const;
+  /// Where particle `index` of run 0 (A) or 1 (B) is on screen [window px, ImGui's mouse coordinates].
+  std::optional<std::array<float, 2>> window_pos_of(int run, std::uint32_t index, const Rect& r) const;
   const render::FrameLayout& layout() const { return renderer_.last_layout(); }
 
  private:
@@ -49,6 +57,7 @@ class ParticleView {
   std::chrono::steady_clock::time_point drawn_at_{};
   std::uint64_t drawn_serial_ = 0;
   render::ViewSettings drawn_view_;
+  render::Highlight drawn_highlight_;
   bool drawn_ = false;
 };
 

@@ -20,10 +20,10 @@ bool Recorder::start(const std::string& dir, std::string* err) {
   return true;
 }
 
-bool Recorder::write(ParticleView& view, const sph::Snapshot& snap, const render::ViewSettings& settings, int width,
-                     int height, std::string* err) {
+bool Recorder::write(ParticleView& view, const render::FrameScene& scene, const render::ViewSettings& settings,
+                     int width, int height, std::string* err) {
   if (!active_) return true;
-  if (!view.render_rgba(snap, settings, width, height, &pixels_, err)) return false;
+  if (!view.render_rgba(scene, settings, width, height, &pixels_, err)) return false;
   char name[32];
   std::snprintf(name, sizeof name, "frame_%05d.png", frames_);
   if (!write_png((std::filesystem::path(dir_) / name).string(), width, height, pixels_, err)) return false;

@@ -16,7 +16,7 @@ class Recorder {
   void stop() { active_ = false; }
   bool active() const { return active_; }
   /// Renders and writes the next frame.
-  bool write(ParticleView& view, const sph::Snapshot& snap, const render::ViewSettings& settings, int width,
+  bool write(ParticleView& view, const render::FrameScene& scene, const render::ViewSettings& settings, int width,
              int height, std::string* err);
   int frames() const { return frames_; }
   const std::string& dir() const { return dir_; }

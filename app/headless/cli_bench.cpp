@@ -42,9 +42,10 @@ std::string short_text(double v) {
 /// Kernels are compared where the scene runs SPH sums; N-body and FPM scenes keep their own.
 bool uses_kernels(const RunConfig& cfg) { return cfg.params.physics.density != DensityMode::None; }
 
-std::string csv_text(const std::vector<SceneBench>& all, int threads) {
-  std::string s = "# sph bench: error at the study's time against wall time, " + std::to_string(threads) +
-                  " threads; valid = 0 where the reference no longer applied\n";
+std::string csv_text(const std::vector<SceneBench>& all, int threads, bool comment) {
+  std::string s = comment ? "# sph bench: error at the study's time against wall time, " + std::to_string(threads) +
+                                " threads; valid = 0 where the reference no longer applied\n"
+                          : std::string();
   s += "scene,kernel,integrator,key,value,h,particles,column,error,valid,warnings,wall_s,steps\n";
   for (const SceneBench& b : all)
     for (const Series& se : b.series)
@@ -177,7 +178,7 @@ int bench_command(const BenchOptions& opt) {
   });
   if (rc != kOk) return rc;
   const std::string md = markdown_text(all, threads);
-  if (!write_text_atomic(dir / "bench.csv", csv_text(all, threads)) || !write_text_atomic(dir / "bench.md", md)) {
+  if (!write_text_atomic(dir / "bench.csv", csv_text(all, threads, opt.csv_comments)) || !write_text_atomic(dir / "bench.md", md)) {
     std::fprintf(stderr, "sph: cannot write %s\n", (dir / "bench.csv").string().c_str());
     return kIoError;
   }

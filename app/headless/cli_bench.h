@@ -18,6 +18,7 @@ struct BenchOptions {
   int threads = 0;
   std::string size = "1280x720";
   bool quiet = false;
+  bool csv_comments = false;      ///< the # line of earlier versions at the head of the CSV (its text is in the .md)
 };
 
 /// The scenes `sph bench` runs when none is named.

@@ -101,7 +101,7 @@ int converge_command(const ConvergeOptions& opt) {
   });
   if (rc != kOk) return rc;
   const std::string md = convergence_markdown(r);
-  if (!write_text_atomic(dir / "converge.csv", convergence_csv(r)) || !write_text_atomic(dir / "converge.md", md)) {
+  if (!write_text_atomic(dir / "converge.csv", convergence_csv(r, opt.csv_comments)) || !write_text_atomic(dir / "converge.md", md)) {
     std::fprintf(stderr, "sph: cannot write %s\n", (dir / "converge.csv").string().c_str());
     return kIoError;
   }

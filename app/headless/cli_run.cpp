@@ -7,15 +7,19 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "cli_common.h"
 #include "exit_codes.h"
 #include "run_output.h"
 #include "sph/config.h"
+#include "sph/ic_export.h"
+#include "sph/suggest.h"
 #include "sph/world.h"
 #ifdef SPH_HAVE_FRAMES
 #include "frame_recorder.h"
 #include "frame_size.h"
+#include "profile_view.h"
 #include "profile_axis.h"
 #include "progress.h"
 #endif
@@ -36,6 +40,11 @@ std::unique_ptr<FrameRecorder> make_recorder(const RunOptions& opt) {
   if (opt.frames.empty()) return nullptr;
   FrameOptions fo;
   fo.dir = opt.frames;
+  fo.fps = opt.fps;
+  fo.gl = gl_backend_from_environment();
+  if (!opt.gl.empty() && !parse_gl_backend(opt.gl, &fo.gl))
+    throw ConfigError("--gl " + opt.gl + ": expected osmesa, egl or auto" + did_you_mean(opt.gl, {"osmesa", "egl", "auto"}) +
+                      " (this build has: " + built_gl_backends() + ")");
   fo.every = opt.every;
   if (!(opt.every > 0.0)) throw ConfigError("--every must be > 0");
   int w = 0, h = 0;
@@ -64,6 +73,7 @@ std::unique_ptr<FrameRecorder> make_recorder(const RunOptions& opt) {
   }
   fo.log_scale = opt.log_scale;
   fo.profile_axis = opt.profile_axis;
+  fo.panels = split_names(opt.panels);
   fo.video = opt.video;
   std::string err;
   auto rec = FrameRecorder::create(fo, &err);
@@ -71,6 +81,16 @@ std::unique_ptr<FrameRecorder> make_recorder(const RunOptions& opt) {
   return rec;
 }
 #endif
+
+/// Run B to run A's time; a divergence of B names it.
+void advance_b(World& b, double t, const CompareSetup& setup) {
+  try {
+    b.advance_to(t);
+  } catch (const DivergedError&) {
+    std::fprintf(stderr, "sph: run %s diverged:\n", setup.label_b.c_str());
+    throw;
+  }
+}
 
 /// The run's "warnings" section on stderr: what it tolerated (nothing is printed for a clean run).
 void print_warnings(const World& world) {
@@ -107,13 +127,30 @@ int run_command(const RunOptions& opt) {
     std::fprintf(stderr, "sph: invalid scene: %s\n", e.what());
     return kInvalidScene;
   }
+  std::optional<CompareSetup> compare;
+  try {
+    compare = resolve_compare(opt.compare, cfg, opt.until);
+  } catch (const ConfigError& e) {
+    std::fprintf(stderr, "sph: invalid scene: %s\n", e.what());
+    return kInvalidScene;
+  }
+  if ((opt.vtu || opt.splash || opt.hdf5) && opt.out.empty()) {
+    std::fprintf(stderr, "sph: %s needs --out DIR (the files go beside the CSVs)\n",
+                 opt.vtu ? "--vtu" : opt.splash ? "--splash" : "--hdf5");
+    return kUsage;
+  }
+  if (opt.hdf5 && !hdf5_unsupported(cfg.params).empty()) {
+    std::fprintf(stderr, "sph: --hdf5: scene %s: %s\n", cfg.scene->name.c_str(), hdf5_unsupported(cfg.params).c_str());
+    return kUsage;
+  }
   if (opt.threads > 0) omp_set_num_threads(opt.threads);
   const double t_end = cfg.params.time.t_end;
-  std::unique_ptr<World> world_ptr;  // outlives the try: a run that stops still reports its warnings
+  std::unique_ptr<World> world_ptr, b_ptr;  // outlive the try: a run that stops still reports its warnings
   try {
     const auto t0 = std::chrono::steady_clock::now();
     world_ptr = std::make_unique<World>(cfg);
     World& world = *world_ptr;
+    if (compare) b_ptr = std::make_unique<World>(compare->b);
 #ifdef SPH_HAVE_FRAMES
     std::unique_ptr<FrameRecorder> rec;
     RunOptions fopt = opt;  // with the colour-by field resolved
@@ -128,42 +165,67 @@ int run_command(const RunOptions& opt) {
         if (opt.tree_probe >= 0 && static_cast<std::size_t>(opt.tree_probe) >= snap.count)
           throw ConfigError("--tree-probe " + std::to_string(opt.tree_probe) + ": scene " + cfg.scene->name + " has " +
                             std::to_string(snap.count) + " particles");
-        if (!snap.find(fopt.color_by)) {
-          std::string known;
-          for (const auto& f : snap.fields) known += " " + f.name;
-          throw ConfigError("--color-by " + fopt.color_by + ": no such field in scene " + cfg.scene->name +
-                            " (fields:" + known + ")");
+        std::string known;
+        std::vector<std::string> names;
+        for (const auto& f : snap.fields) {
+          known += " " + f.name;
+          names.push_back(f.name);
         }
+        if (!snap.find(fopt.color_by))
+          throw ConfigError("--color-by " + fopt.color_by + ": no such field in scene " + cfg.scene->name +
+                            did_you_mean(fopt.color_by, names) + " (fields:" + known + ")");
+        for (const std::string& p : render::panel_fields(snap, split_names(opt.panels)))
+          if (!snap.find(p))
+            throw ConfigError(std::string(flag::kPanels) + " " + opt.panels + ": no field '" + p + "' in scene " +
+                              cfg.scene->name + did_you_mean(p, names) + " (fields:" + known +
+                              "; v is vx in 1D, else speed)");
       }
       rec = make_recorder(fopt);  // validates the frame flags before anything is written
       if (rec && rec->view().profile_axis >= 0 && !render::draws_profile(cfg.scene->dim, rec->view().profile_axis))
         std::fprintf(stderr, "sph: note: %s applies to 2D scenes; %s is %dD, so it is ignored\n",
                      flag::kProfileAxis, cfg.scene->name.c_str(), cfg.scene->dim);
+      if (rec && !opt.panels.empty() && !render::draws_profile(cfg.scene->dim, rec->view().profile_axis))
+        std::fprintf(stderr, "sph: note: %s applies to profiles (1D scenes, or %s x|y|r); ignored\n", flag::kPanels,
+                     flag::kProfileAxis);
     } catch (const ConfigError& e) {
       std::fprintf(stderr, "sph: %s\n", e.what());
       return kUsage;
     }
 #else
-    if (!opt.frames.empty()) {
-      std::fprintf(stderr, "sph: --frames: this build has no OSMesa renderer\n");
+    if (!opt.frames.empty() || !opt.video.empty()) {
+      std::fprintf(stderr, "sph: --frames, --video: this build has no headless renderer\n");
       return kUsage;
     }
 #endif
-    std::unique_ptr<RunOutput> out;
-    if (!opt.out.empty()) out = std::make_unique<RunOutput>(opt.out, world);
+    std::unique_ptr<RunOutput> out, out_b;  // run B's files go to OUT/B
+    OutputOptions formats{opt.csv_comments, opt.vtu, opt.splash, opt.hdf5};
+    if (!opt.out.empty()) out = std::make_unique<RunOutput>(opt.out, world, formats);
+    if (!opt.out.empty() && b_ptr) out_b = std::make_unique<RunOutput>(opt.out + "/B", *b_ptr, formats);
     const double dt_out = cfg.params.time.dt_out > 0.0 ? cfg.params.time.dt_out : t_end;
     int next_out = 1;
     if (out) { out->write_diagnostics(world); out->write_particles(world); }
+    if (out_b) { out_b->write_diagnostics(*b_ptr); out_b->write_particles(*b_ptr); }
 #ifdef SPH_HAVE_FRAMES
     int next_frame = 1;
     std::string err;
-    auto frame = [&] {  // the snapshot, with the probed particle's tree walk when asked for
-      Snapshot snap = world.snapshot();
+    Snapshot snap, snap_b;
+    auto frame = [&] {  // the snapshot(s), with the probed particle's tree walk when asked for
+      snap = world.snapshot();
       if (opt.tree_probe >= 0) {
         snap.tree_cells = world.tree_cells(static_cast<std::size_t>(opt.tree_probe));
         snap.tree_probe = opt.tree_probe;
       }
-      return snap;
+      render::FrameScene scene;
+      scene.a = &snap;
+      if (b_ptr) {
+        snap_b = b_ptr->snapshot();
+        scene.b = &snap_b;
+        scene.label_a = compare->label_a;
+        scene.label_b = compare->label_b;
+        scene.errors_a = reference_errors(world);
+        scene.errors_b = reference_errors(*b_ptr);
+      }
+      return scene;
     };
     if (rec && !rec->write_frame(frame(), &err)) throw IoError(err);
     Progress progress(t_end);
@@ -175,9 +237,12 @@ int run_command(const RunOptions& opt) {
       if (rec) target = std::min(target, next_frame * opt.every);
 #endif
       world.step(target - world.time());
+      if (b_ptr) advance_b(*b_ptr, world.time(), *compare);
       if (out) out->write_diagnostics(world);
+      if (out_b) out_b->write_diagnostics(*b_ptr);
       if (reached(next_out * dt_out) || world.time() >= t_end) {
         if (out) out->write_particles(world);
+        if (out_b) out_b->write_particles(*b_ptr);
         while (reached(next_out * dt_out)) ++next_out;
       }
 #ifdef SPH_HAVE_FRAMES
@@ -192,6 +257,7 @@ int run_command(const RunOptions& opt) {
     progress.finish();
 #endif
     if (out) out->write_warnings(world);
+    if (out_b) out_b->write_warnings(*b_ptr);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (!opt.quiet) {
       const double psteps = static_cast<double>(world.steps()) * static_cast<double>(world.particles().size());
@@ -210,22 +276,29 @@ int run_command(const RunOptions& opt) {
         }
         std::printf("%s\n", line.c_str());
       }
+      if (b_ptr) std::printf("%s\n", compare_summary(*b_ptr, *compare).c_str());
     }
     print_warnings(world);
+    if (b_ptr) print_warnings(*b_ptr);
 #ifdef SPH_HAVE_FRAMES
     if (rec) {
       if (!rec->flush(&err)) throw IoError(err);  // PNGs are compressed in the background
       std::printf("%d frames in %s; make a video with:\n  %s\n", rec->frames_written(), opt.frames.c_str(),
                   rec->ffmpeg_command().c_str());
-      if (!opt.video.empty() && !rec->make_video(&err)) {
-        std::fprintf(stderr, "sph: --video: %s\n", err.c_str());
-        return kIoError;
+      if (!opt.video.empty()) {
+        if (!rec->make_video(&err)) {
+          std::fprintf(stderr, "sph: %s\n", err.c_str());
+          return kIoError;
+        }
+        std::printf("video %s (%d frames at %d/s), last frame %s\n", opt.video.c_str(), rec->frames_written(), opt.fps,
+                    rec->still_path().c_str());
       }
     }
 #endif
   } catch (const DivergedError& e) {
     std::fprintf(stderr, "sph: %s; the state was not written\n", e.what());
     if (world_ptr) print_warnings(*world_ptr);
+    if (b_ptr) print_warnings(*b_ptr);
     return kDiverged;
   } catch (const IoError& e) {
     std::fprintf(stderr, "sph: I/O error: %s\n", e.what());

@@ -3,6 +3,8 @@
 #include <string>
 #include <vector>
 
+#include "cli_compare.h"
+
 namespace sph::cli {
 
 struct RunOptions {
@@ -12,7 +14,9 @@ struct RunOptions {
   std::string out;                 ///< output directory ("" = no files)
   int threads = 0;                 ///< OpenMP threads (0 = default)
   bool quiet = false;
-  // frames (OSMesa build only)
+  bool csv_comments = false;       ///< the '#' lines of earlier versions in the CSV files
+  bool vtu = false, splash = false, hdf5 = false;  ///< the other particle formats (need --out)
+  // frames (headless-render build only)
   std::string frames;              ///< frame directory ("" = no frames)
   double every = 0.1;              ///< simulated time between frames
   std::string size = "1280x720";
@@ -22,7 +26,11 @@ struct RunOptions {
   bool log_scale = false;
   std::string profile_axis = "off";  ///< 2D scenes: "x" or "y" plots the field against that coordinate
   std::string video;
+  int fps = 30;                    ///< frame rate of --video [frames/s]
+  std::string gl;                  ///< --gl osmesa|egl|auto (empty: SPH_GL, else auto)
   long long tree_probe = -1;       ///< frames draw the Barnes-Hut walk of this particle (-1: none)
+  std::string panels;              ///< profiles: comma-separated fields, one panel each ("rho,v,p,u")
+  CompareOptions compare;          ///< run B of an A/B comparison (--compare, --compare-set)
 };
 
 int run_command(const RunOptions& opt);

@@ -69,9 +69,9 @@ bool on_path(const char* program) {
 
 // ---- OffscreenRenderer ---------------------------------------------------------------------------
 
-std::unique_ptr<OffscreenRenderer> OffscreenRenderer::create(std::string* err) {
+std::unique_ptr<OffscreenRenderer> OffscreenRenderer::create(std::string* err, GlBackend backend) {
   auto r = std::unique_ptr<OffscreenRenderer>(new OffscreenRenderer());
-  r->context_ = create_osmesa_context(err);
+  r->context_ = create_offscreen_context(backend, err);
   if (!r->context_) return nullptr;
   // A small target first: the renderer needs a current context to compile its shaders.
   if (!r->context_->make_current(16, 16, err)) return nullptr;
@@ -88,8 +88,15 @@ OffscreenRenderer::~OffscreenRenderer() {
 
 bool OffscreenRenderer::render(const sph::Snapshot& snap, const render::ViewSettings& view, int width, int height,
                                std::vector<std::uint8_t>* rgba, std::string* err) {
+  render::FrameScene scene;
+  scene.a = &snap;
+  return render(scene, view, width, height, rgba, err);
+}
+
+bool OffscreenRenderer::render(const render::FrameScene& scene, const render::ViewSettings& view, int width,
+                               int height, std::vector<std::uint8_t>* rgba, std::string* err) {
   if (!context_->make_current(width, height, err)) return false;
-  renderer_.render(snap, view, width, height);
+  renderer_.render(scene, view, width, height);
   last_gl_error_ = renderer_.gl().GetError();
   return context_->read_pixels(rgba, err);
 }
@@ -205,6 +212,7 @@ FrameRecorder::FrameRecorder(const FrameOptions& options, std::unique_ptr<Offscr
   view_.percentile_hi = options.percentile_hi;
   view_.log_scale = options.log_scale;
   view_.profile_axis = render::parse_profile_axis(options.profile_axis).value_or(-1);
+  view_.panels = options.panels;
 }
 
 FrameRecorder::~FrameRecorder() {
@@ -242,6 +250,10 @@ std::unique_ptr<FrameRecorder> FrameRecorder::create(const FrameOptions& o, std:
     fail(err, std::string(flag::kRange) + " must be min:max with min < max");
     return nullptr;
   }
+  if (!o.video.empty() && !o.video.ends_with(".mp4") && !o.video.ends_with(".webm") && !o.video.ends_with(".gif")) {
+    fail(err, std::string(flag::kVideo) + " " + o.video + ": the name must end in .mp4, .webm or .gif");
+    return nullptr;
+  }
   if (o.fps <= 0) {
     fail(err, std::string(flag::kFps) + " must be positive");
     return nullptr;
@@ -257,7 +269,7 @@ std::unique_ptr<FrameRecorder> FrameRecorder::create(const FrameOptions& o, std:
                   (ec ? ": " + ec.message() : std::string()));
     return nullptr;
   }
-  auto renderer = OffscreenRenderer::create(err);
+  auto renderer = OffscreenRenderer::create(err, o.gl);
   if (!renderer) return nullptr;
   return std::unique_ptr<FrameRecorder>(new FrameRecorder(o, std::move(renderer)));
 }
@@ -271,11 +283,18 @@ std::string FrameRecorder::frame_path(int index) const {
 }
 
 bool FrameRecorder::write_frame(const sph::Snapshot& snap, std::string* err) {
+  render::FrameScene scene;
+  scene.a = &snap;
+  return write_frame(scene, err);
+}
+
+bool FrameRecorder::write_frame(const render::FrameScene& scene, std::string* err) {
+  const sph::Snapshot& snap = *scene.a;
   if (snap.find(view_.color_by) == nullptr) {
     fail(err, std::string(flag::kColorBy) + ": " + render::missing_field_message(snap, view_.color_by));
     return false;
   }
-  if (!renderer_->render(snap, view_, options_.width, options_.height, &pixels_, err)) return false;
+  if (!renderer_->render(scene, view_, options_.width, options_.height, &pixels_, err)) return false;
   if (!writer_->submit(frame_path(frames_), options_.width, options_.height, &pixels_, err)) return false;
   if (frames_ == 0) first_t_ = snap.t;
   // Next due time: the first multiple of `every` (counted from frame 0) after this snapshot's time.
@@ -287,10 +306,20 @@ bool FrameRecorder::write_frame(const sph::Snapshot& snap, std::string* err) {
 
 std::string FrameRecorder::ffmpeg_command() const {
   const std::string pattern = (std::filesystem::path(options_.dir) / "frame_%05d.png").string();
+  const std::string out = shell_quote(options_.video.empty() ? std::string("video.mp4") : options_.video);
+  const std::string in = "ffmpeg -y -loglevel error -framerate " + std::to_string(options_.fps) + " -i " +
+                         shell_quote(pattern);
+  if (options_.video.ends_with(".gif"))  // one palette made for these frames: flat colours stay flat
+    return in + " -filter_complex \"[0:v]split[a][b];[a]palettegen=stats_mode=full[p];[b][p]paletteuse=dither=none\" " +
+           out;
+  if (options_.video.ends_with(".webm")) return in + " -c:v libvpx-vp9 -pix_fmt yuv420p -b:v 0 -crf 30 " + out;
   // yuv420p: playable everywhere (needs even sizes, checked in create); crf 18: visually lossless.
-  return "ffmpeg -y -loglevel error -framerate " + std::to_string(options_.fps) + " -i " + shell_quote(pattern) +
-         " -c:v libx264 -pix_fmt yuv420p -crf 18 -movflags +faststart " +
-         shell_quote(options_.video.empty() ? std::string("video.mp4") : options_.video);
+  return in + " -c:v libx264 -pix_fmt yuv420p -crf 18 -movflags +faststart " + out;
+}
+
+std::string FrameRecorder::still_path() const {
+  std::filesystem::path p(options_.video.empty() ? std::string("video.mp4") : options_.video);
+  return (p.parent_path() / (p.stem().string() + "_last.png")).string();
 }
 
 bool FrameRecorder::make_video(std::string* err) {
@@ -309,6 +338,13 @@ bool FrameRecorder::make_video(std::string* err) {
   if (status != 0) {
     fail(err, std::string(flag::kVideo) + ": ffmpeg failed (status " + std::to_string(status) + "): " +
                   ffmpeg_command());
+    return false;
+  }
+  std::error_code ec;
+  std::filesystem::copy_file(frame_path(frames_ - 1), still_path(), std::filesystem::copy_options::overwrite_existing,
+                             ec);
+  if (ec) {
+    fail(err, std::string(flag::kVideo) + ": cannot write the still " + still_path() + ": " + ec.message());
     return false;
   }
   return true;

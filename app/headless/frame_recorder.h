@@ -1,12 +1,13 @@
-// Headless frames: renders snapshots off-screen (OSMesa) and writes numbered PNG files, optionally
-// joined into a video by ffmpeg afterwards.
+// Headless frames: renders snapshots off-screen (OSMesa or EGL) and writes numbered PNG files, optionally
+// joined into a video (or an animated GIF) by ffmpeg afterwards, with a still of the last frame.
 #pragma once
 #include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "osmesa_context.h"
+#include "frame_scene.h"
+#include "offscreen_context.h"
 #include "renderer.h"
 #include "view_settings.h"
 
@@ -27,6 +28,7 @@ inline constexpr const char* kRange = "--range";
 inline constexpr const char* kProfileAxis = "--profile-axis";
 inline constexpr const char* kVideo = "--video";
 inline constexpr const char* kFps = "--fps";
+inline constexpr const char* kPanels = "--panels";
 }  // namespace flag
 
 struct FrameOptions {
@@ -41,17 +43,22 @@ struct FrameOptions {
   float percentile_lo = 0, percentile_hi = 100;  ///< auto range between these percentiles (--range pLO:HI)
   bool log_scale = false;     ///< colour by log10 of the field (--log)
   std::string profile_axis = "off";  ///< 2D: "x" or "y" (profile of the field against it), or "off"
-  std::string video;          ///< mp4 path to make from the frames, or empty
+  std::vector<std::string> panels;   ///< profiles: one panel per field (ViewSettings::panels)
+  std::string video;          ///< .mp4 (H.264), .webm or .gif (animated, for slides) to make, or empty
   int fps = 30;               ///< video frame rate [frames per second]
+  GlBackend gl = GlBackend::Auto;  ///< off-screen context (--gl)
 };
 
 /// An off-screen context plus a renderer: snapshot in, RGBA pixels out.
 class OffscreenRenderer {
  public:
-  static std::unique_ptr<OffscreenRenderer> create(std::string* err);
+  /// A context of `backend` (default: SPH_GL from the environment, else auto) and a renderer in it.
+  static std::unique_ptr<OffscreenRenderer> create(std::string* err, GlBackend backend = gl_backend_from_environment());
   ~OffscreenRenderer();  ///< frees the GL objects with its own context current
   /// Renders into an RGBA8 buffer of width*height*4 bytes, rows top-down.
   bool render(const sph::Snapshot& snap, const render::ViewSettings& view, int width, int height,
+              std::vector<std::uint8_t>* rgba, std::string* err);
+  bool render(const render::FrameScene& scene, const render::ViewSettings& view, int width, int height,
               std::vector<std::uint8_t>* rgba, std::string* err);
   /// glGetError() after the last render (GL_NO_ERROR = 0 when all went well).
   unsigned gl_error() const { return last_gl_error_; }
@@ -91,15 +98,20 @@ class FrameRecorder {
   /// flush). Fails (with the field named and the available ones listed) if the colour-by field is
   /// not in the snapshot.
   bool write_frame(const sph::Snapshot& snap, std::string* err);
+  /// The same for a FrameScene (the two runs of a comparison, highlights).
+  bool write_frame(const render::FrameScene& scene, std::string* err);
   /// Waits until every frame is on disk; false with the first write error.
   bool flush(std::string* err);
   int frames_written() const { return frames_; }
   std::string frame_path(int index) const;
 
-  /// The ffmpeg command line that turns the frames into options.video.
+  /// The ffmpeg command line that turns the frames into options.video (a GIF gets its own palette).
   std::string ffmpeg_command() const;
-  /// Flushes, then runs ffmpeg_command() if options.video is set (true and nothing done otherwise).
+  /// Flushes, then runs ffmpeg_command() if options.video is set (true and nothing done otherwise),
+  /// and copies the last frame beside the video as its still (still_path()).
   bool make_video(std::string* err);
+  /// VIDEO without its extension + "_last.png": the last frame, for a poster or a slide.
+  std::string still_path() const;
 
   const FrameOptions& options() const { return options_; }
   render::ViewSettings& view() { return view_; }  ///< cameras, point sizes: adjustable before frames

@@ -1,18 +1,22 @@
 // sph: the headless program. `sph list`, `sph check SCENE`, `sph run SCENE [...]`, `sph converge SCENE [...]`,
-// `sph bench [SCENE...]`.
+// `sph bench [SCENE...]`, `sph export-ics SCENE`, `sph help [SCENE]`, `sph params`.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 
 #include "cli_bench.h"
 #include "cli_converge.h"
+#include "cli_export.h"
+#include "cli_help.h"
 #include "cli_run.h"
+#include "cli_suggest.h"
 #include "exit_codes.h"
 #include "number_checks.h"
 
 int main(int argc, char** argv) {
   using namespace sph::cli;
-  CLI::App app{"sph: SPH sandbox, headless runs.\n"
+  CLI::App app{"sph: SPH sandbox, headless runs. `sph help SCENE` explains a scene, `sph params` every key.\n"
                "Exit codes: 0 ok, 1 internal error, 2 usage error, 3 invalid scene (unknown scene, malformed\n"
                "file, unknown key, value out of range), 4 I/O error, 5 diverged (NaN/inf in the state, a\n"
                "finite blow-up of the energy or the timestep, a particle through a wall, a start the h solve\n"
@@ -23,14 +27,25 @@ int main(int argc, char** argv) {
   auto* check = app.add_subcommand("check", "validate a scene name or JSON file and its overrides");
   auto* run = app.add_subcommand("run", "run a scene and write its output");
   for (auto* sub : {check, run}) {
-    sub->add_option("scene", opt.scene, "built-in scene name or JSON scene file")->required();
-    sub->add_option("--set", opt.sets, "override a parameter: key=value (repeatable; see scene.json for keys)");
+    sub->add_option("scene", opt.scene, "built-in scene name, JSON scene file or HDF5 initial condition (.hdf5)")
+        ->required();
+    sub->add_option("--set", opt.sets, "override a parameter: key=value (repeatable; `sph help SCENE` lists the keys)");
     sub->add_option("--until", opt.until, "end time (overrides time.t_end)")->check(finite_from(0.0, false));
   }
-  run->add_option("--out", opt.out, "output directory: scene.json, diagnostics.csv, particles_*.csv, errors.csv");
+  run->add_option("--out", opt.out, "output directory: scene.json, diagnostics.csv, particles_*.csv, errors.csv, csv_meta.json");
   run->add_option("--threads", opt.threads, "OpenMP threads")->check(CLI::Range(1, 1024));
   run->add_flag("--quiet", opt.quiet, "no summary line");
-#ifdef SPH_HAVE_FRAMES  // OSMesa build: image sequences
+  run->add_option("--compare", opt.compare.scene,
+                  "A/B comparison: run B is this scene name or JSON file (the same scene as A, other parameters), "
+                  "stepped to A's times; its files go to OUT/B, its frames beside A's");
+  run->add_option("--compare-set", opt.compare.sets,
+                  "A/B comparison: run B is run A (or --compare's scene) with key=value changed (repeatable), "
+                  "e.g. --compare-set kernel.type=M6");
+  run->add_flag("--csv-comments", opt.csv_comments, "keep the '#' comment lines in the CSV files (default: in csv_meta.json)");
+  run->add_flag("--vtu", opt.vtu, "also write particles_NNNNN.vtu and particles.pvd (ParaView)");
+  run->add_flag("--splash", opt.splash, "also write particles_NNNNN.dat (SPLASH: splash -ascii FILE)");
+  run->add_flag("--hdf5", opt.hdf5, "also write particles_NNNNN.hdf5 (the SWIFT/GADGET layout)");
+#ifdef SPH_HAVE_FRAMES  // headless renderer: image sequences
   run->add_option("--frames", opt.frames, "write PNG frames into this directory");
   run->add_option("--every", opt.every, "simulated time between frames")->check(finite_from(0.0, true));
   run->add_option("--size", opt.size, "frame size WIDTHxHEIGHT (even numbers)");
@@ -40,7 +55,12 @@ int main(int argc, char** argv) {
   run->add_flag("--log", opt.log_scale, "colour by log10 of the field (values <= 0 are not drawn)");
   run->add_option("--profile-axis", opt.profile_axis,
                   "2D scenes: plot the field against x or y (with its reference curve) instead of the plane; off");
-  run->add_option("--video", opt.video, "also make this .mp4 with ffmpeg");
+  run->add_option("--video", opt.video, "also make this .mp4, .webm or .gif with ffmpeg, and VIDEO_last.png (frames go to "
+                                        "--frames, else VIDEO_frames/)");
+  run->add_option("--fps", opt.fps, "frame rate of --video")->check(CLI::Range(1, 240));
+  run->add_option("--gl", opt.gl, "off-screen OpenGL: osmesa, egl or auto (default: $SPH_GL, else auto = OSMesa, then EGL)");
+  run->add_option("--panels", opt.panels,
+                  "profiles (1D, or --profile-axis): one panel per field, comma-separated, e.g. rho,v,p,u (v: v_x in 1D)");
   run->add_option("--tree-probe", opt.tree_probe,
                   "scenes with physics.gravity = tree: draw the cells of this particle's tree walk in the frames")
       ->check(CLI::NonNegativeNumber);
@@ -58,6 +78,7 @@ int main(int argc, char** argv) {
   converge->add_option("--threads", conv.threads, "OpenMP threads")->check(CLI::Range(1, 1024));
   converge->add_option("--size", conv.size, "plot size WIDTHxHEIGHT (even numbers)");
   converge->add_flag("--quiet", conv.quiet, "no progress or table on the terminal");
+  converge->add_flag("--csv-comments", conv.csv_comments, "a '#' line naming the study at the head of converge.csv");
   BenchOptions bench_opt;
   auto* bench = app.add_subcommand("bench", "work-precision report: error against wall time over resolutions x kernels x integrators");
   bench->add_option("scenes", bench_opt.scenes, "scenes with a reference (default: sod, shocktube_castellanos, toro3, sedov)");
@@ -69,6 +90,26 @@ int main(int argc, char** argv) {
   bench->add_option("--threads", bench_opt.threads, "OpenMP threads")->check(CLI::Range(1, 1024));
   bench->add_option("--size", bench_opt.size, "plot size WIDTHxHEIGHT (even numbers)");
   bench->add_flag("--quiet", bench_opt.quiet, "no progress or table on the terminal");
+  bench->add_flag("--csv-comments", bench_opt.csv_comments, "a '#' line at the head of bench.csv");
+  ExportOptions ex;
+  auto* exp = app.add_subcommand("export-ics", "write a scene's initial condition for SWIFT or GADGET-4 (HDF5) and "
+                                               "the parameter file to run it");
+  exp->add_option("scene", ex.scene, "built-in scene name, JSON scene file or HDF5 initial condition")->required();
+  exp->add_option("--format", ex.format, "swift (FILE.yml beside it) or gadget4 (FILE-param.txt)");
+  exp->add_option("--out", ex.out, "the .hdf5 file to write")->required();
+  exp->add_option("--set", ex.sets, "override a parameter: key=value (repeatable)");
+  exp->add_option("--until", ex.until, "end time written to the parameter file")->check(finite_from(0.0, true));
+  exp->add_option("--threads", ex.threads, "OpenMP threads")->check(CLI::Range(1, 1024));
+  std::string help_scene;
+  std::vector<std::string> help_sets;
+  auto* help = app.add_subcommand("help", "explain a scene: stages, every parameter (unit, range, default, seed "
+                                          "equation), its reference and error norms; without one, list the scenes");
+  help->add_option("scene", help_scene, "built-in scene name, JSON scene file or HDF5 initial condition");
+  help->add_option("--set", help_sets, "show the scene with these overrides: key=value (repeatable)");
+  app.add_subcommand("params", "every run parameter key with its unit, range, default and stage");
+  for (CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) sub->allow_extras();
+
+  if (report_unknown_command(app, argc, argv)) return kUsage;
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -77,11 +118,19 @@ int main(int argc, char** argv) {
     app.exit(e);
     return kUsage;
   }
+  if (report_stray_arguments(app)) return kUsage;
+  if (!opt.video.empty() && opt.frames.empty()) {  // frames beside the video: NAME_frames/
+    const std::filesystem::path v(opt.video);
+    opt.frames = (v.parent_path() / (v.stem().string() + "_frames")).string();
+  }
   try {
     if (app.got_subcommand("list")) return list_command();
     if (app.got_subcommand("check")) return check_command(opt);
     if (app.got_subcommand("converge")) return converge_command(conv);
     if (app.got_subcommand("bench")) return bench_command(bench_opt);
+    if (app.got_subcommand("export-ics")) return export_command(ex);
+    if (app.got_subcommand("help")) return help_command(help_scene, help_sets);
+    if (app.got_subcommand("params")) return params_command();
     return run_command(opt);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "sph: internal error: %s\n", e.what());

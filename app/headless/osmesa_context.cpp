@@ -10,14 +10,7 @@ namespace sph::cli {
 
 namespace {
 
-// OSMesaGetProcAddress returns a function pointer; the renderer's seam takes an object pointer.
-void* osmesa_get_proc(const char* name) {
-  const OSMESAproc f = OSMesaGetProcAddress(name);
-  void* p = nullptr;
-  static_assert(sizeof(p) == sizeof(f));
-  std::memcpy(&p, &f, sizeof(p));
-  return p;
-}
+void* osmesa_get_proc(const char* name) { return object_pointer(OSMesaGetProcAddress(name)); }
 
 class OsmesaContext final : public OffscreenContext {
  public:
@@ -55,14 +48,7 @@ class OsmesaContext final : public OffscreenContext {
       if (err) *err = "no current OSMesa context";
       return false;
     }
-    const std::size_t row = static_cast<std::size_t>(width_) * 4;
-    scratch_.resize(row * static_cast<std::size_t>(height_));
-    gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);
-    gl_.ReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, scratch_.data());
-    rgba->resize(scratch_.size());
-    for (int y = 0; y < height_; ++y)  // GL row 0 is the bottom of the image
-      std::memcpy(rgba->data() + static_cast<std::size_t>(y) * row,
-                  scratch_.data() + static_cast<std::size_t>(height_ - 1 - y) * row, row);
+    read_top_down(gl_, width_, height_, &scratch_, rgba);
     return true;
   }
 

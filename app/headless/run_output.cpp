@@ -3,6 +3,11 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "cli_common.h"
+#include "sph/ic_export.h"
+#include "sph/splash_ascii.h"
 
 namespace sph::cli {
 namespace {
@@ -13,19 +18,29 @@ std::ofstream open_file(const std::string& path) {
   return f;
 }
 
+std::string diagnostics_note(const World& world) {
+  return world.scene().name + ": conserved quantities per step (seed 000 eqs. 3.4.1-3.4.5)";
+}
+
 }  // namespace
 
-RunOutput::RunOutput(const std::string& dir, const World& world) : dir_(dir) {
+void write_file(const std::string& path, const std::string& bytes) {
+  if (!write_text_atomic(path, bytes)) throw IoError("cannot write " + path);
+}
+
+RunOutput::RunOutput(const std::string& dir, const World& world, const OutputOptions& options)
+    : dir_(dir), options_(options) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw IoError("cannot create output directory " + dir + ": " + ec.message());
   open_file(dir + "/scene.json") << world.config().to_json();
   diag_ = open_file(dir + "/diagnostics.csv");
-  diag_ << "# " << world.scene().name << ": conserved quantities per step (seed 000 eqs. 3.4.1-3.4.5)\n"
-        << diagnostics_csv_header() << "\n";
+  if (options_.csv_comments) diag_ << "# " << diagnostics_note(world) << "\n";
+  diag_ << diagnostics_csv_header() << "\n";
   if (world.has_reference()) {
     errors_ = open_file(dir + "/errors.csv");
-    errors_ << "# " << world.reference()->description() << "\n" << errors_csv_header(world.reference_columns()) << "\n";
+    if (options_.csv_comments) errors_ << "# " << world.reference()->description() << "\n";
+    errors_ << errors_csv_header(world.reference_columns()) << "\n";
     valid_until_ = world.reference()->valid_until();
   }
   // particle columns: id, position, velocity, then the scene's state fields, then the kind if it has walls
@@ -44,12 +59,13 @@ void RunOutput::write_diagnostics(const World& world) {
 }
 
 void RunOutput::write_particles(const World& world) {
-  char name[64];
-  std::snprintf(name, sizeof name, "/particles_%05d.csv", files_);
-  const std::string path = dir_ + name;
+  char stem[32];
+  std::snprintf(stem, sizeof stem, "particles_%05d", files_);
+  const std::string base = dir_ + "/" + stem;
+  const std::string path = base + ".csv";
   std::ofstream f = open_file(path);
   const Particles& p = world.particles();
-  f << "# t = " << world.time() << ", step " << world.steps() << "\n";
+  if (options_.csv_comments) f << "# t = " << world.time() << ", step " << world.steps() << "\n";
   const bool walls = p.fluid() < p.size();
   f << "id,x,y,z,vx,vy,vz";
   for (Field c : columns_) f << "," << info(c).key;
@@ -71,11 +87,35 @@ void RunOutput::write_particles(const World& world) {
   }
   if (!f) throw IoError("cannot write " + path);
   ++files_;
+  series_.push_back({world.time(), stem});
+  steps_.push_back(world.steps());
   if (world.has_reference()) {
     errors_ << errors_csv_row(world.time(), world.reference_values(), world.time() <= valid_until_ * (1.0 + 1e-12))
             << "\n";
     if (!errors_) throw IoError("cannot write " + dir_ + "/errors.csv");
   }
+  if (options_.vtu) {
+    write_file(base + ".vtu", vtu_file(world));
+    std::vector<PvdEntry> entries = series_;
+    for (PvdEntry& e : entries) e.file += ".vtu";
+    write_file(dir_ + "/particles.pvd", pvd_file(entries));
+  }
+  if (options_.splash) write_file(base + ".dat", splash_ascii_file(world));
+  if (options_.hdf5) write_file(base + ".hdf5", hdf5_snapshot(world, IcFormat::Swift));
+  if (!options_.csv_comments) write_meta(world);
+}
+
+void RunOutput::write_meta(const World& world) const {
+  nlohmann::ordered_json j;
+  j["scene"] = world.scene().name;
+  j["about"] = "what the comment lines of the CSV files said (sph run --csv-comments puts them back in the files)";
+  j["diagnostics.csv"] = diagnostics_note(world);
+  if (world.has_reference()) j["errors.csv"] = world.reference()->description();
+  nlohmann::ordered_json files = nlohmann::ordered_json::array();
+  for (std::size_t k = 0; k < series_.size(); ++k)
+    files.push_back({{"file", series_[k].file + ".csv"}, {"t", series_[k].t}, {"step", steps_[k]}});
+  j["particles"] = files;
+  write_file(dir_ + "/csv_meta.json", j.dump(2) + "\n");
 }
 
 void RunOutput::write_warnings(const World& world) {

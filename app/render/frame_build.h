@@ -4,8 +4,11 @@
 #include <string>
 #include <vector>
 
+#include <cstdint>
+
 #include "camera.h"
 #include "colormap.h"
+#include "cpu_splat.h"
 #include "field_range.h"
 #include "frame_layout.h"
 #include "shape_batch.h"
@@ -30,6 +33,25 @@ struct ShownField {
 /// [field units], wall (1: drawn in palette::kWall whatever the value, 0: colour-mapped fluid).
 inline constexpr int kInstanceFloats = 6;
 
+/// Particles drawn into a plot of their own: the panels of a multi-panel frame and the runs of a
+/// comparison. A solid set flags every instance as a wall and draws it in colors.wall (one colour per
+/// run); otherwise values go through the colour map over `range`.
+struct ParticleBatch {
+  PixelRect rect;                    ///< the plot (viewport) [px]
+  PixelRect fill;                    ///< cleared to palette::kPlotFill first (its axes box), when not empty
+  CameraMatrices camera;             ///< plot space -> clip
+  std::vector<float> instances;      ///< kInstanceFloats per particle
+  std::vector<std::uint32_t> index;  ///< snapshot index of each instance (picking, highlights)
+  int run = 0;                       ///< 0: FrameScene::a, 1: FrameScene::b
+  float pixel_radius = 0.f;          ///< > 0: fixed radius [px]
+  float min_radius = 1.f;            ///< smallest radius [px]
+  bool shaded = false;               ///< lit spheres with depth (3D)
+  Colormap cmap = Colormap::Viridis;
+  ValueRange range;
+  FixedColors colors;
+  ShapeBatch clipped;                ///< drawn after the particles, scissored to rect (exact curves)
+};
+
 struct FrameBuild {
   explicit FrameBuild(const FontAtlas& font) : text(font) {}
 
@@ -41,10 +63,12 @@ struct FrameBuild {
   TextBatch text;      ///< last
 
   std::vector<float> instances;  ///< kInstanceFloats per particle
+  std::vector<std::uint32_t> index;  ///< snapshot index of each instance (picking, highlights)
   CameraMatrices camera;         ///< plot space -> clip, for the particle pass
   float pixel_radius = 0.f;      ///< > 0: fixed particle radius [px]
   float min_radius = 1.f;        ///< smallest particle radius [px]
   bool shaded = false;           ///< lit spheres with depth (3D)
+  std::vector<ParticleBatch> batches;  ///< more plots, drawn after the primary one (panels, run B)
 
   void clear() {
     fill = {};
@@ -53,9 +77,36 @@ struct FrameBuild {
     over.clear();
     text.clear();
     instances.clear();
+    index.clear();
+    batches.clear();
     pixel_radius = 0.f;
     min_radius = 1.f;
     shaded = false;
+  }
+
+  /// Moves the primary plot (particles, their camera, layout.plot, its fill and clipped overlays) into
+  /// a new batch of run `run` drawn with `cmap`, `range` and `colors`: a frame of several plots
+  /// composes each as the primary one, then detaches it.
+  ParticleBatch& detach_primary(int run, Colormap cmap, ValueRange range, FixedColors colors) {
+    ParticleBatch& b = batches.emplace_back();
+    b.rect = layout.plot;
+    b.fill = fill;
+    b.camera = camera;
+    b.instances = std::move(instances);
+    b.index = std::move(index);
+    b.run = run;
+    b.pixel_radius = pixel_radius;
+    b.min_radius = min_radius;
+    b.shaded = shaded;
+    b.cmap = cmap;
+    b.range = range;
+    b.colors = colors;
+    std::swap(b.clipped, clipped);
+    instances.clear();
+    index.clear();
+    clipped.clear();
+    fill = {};
+    return b;
   }
 };
 

@@ -1,6 +1,9 @@
 // Where things go in a frame: title row, plot (the particles' viewport), colour bar; and the mapping
 // from plot coordinates to frame pixels, kept for tests and for the GUI (picking, pan and zoom).
 #pragma once
+#include <string>
+#include <vector>
+
 #include "mat4.h"
 #include "overlay_types.h"
 
@@ -15,6 +18,7 @@ struct FrameLayout {
   PixelRect plot;             ///< particles' viewport: axes box (1D, 2D) or 3D view; whole pixels
   PixelRect colorbar;         ///< the gradient bar (empty when no field is shown)
   PixelRect legend;           ///< the plot's legend box (empty when it has none)
+  std::vector<std::string> legend_rows;  ///< the text of every legend row drawn, in order (tests, reports)
   PixelRect panel;            ///< colour-bar panel: field label, bar, value labels
   Mat4 plot_to_clip;          ///< 2D/3D: world -> clip; 1D: (x, value, 0) -> clip
 

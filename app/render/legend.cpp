@@ -42,9 +42,9 @@ void densify(std::span<const float> xy, float step, std::vector<float>* out) {
 }
 
 bool add_legend(FrameBuild& f, const PixelRect& box, std::span<const LegendEntry> entries,
-                std::span<const float> avoid_xy, float clear) {
+                std::span<const float> avoid_xy, float clear, int text_scale) {
   if (entries.empty()) return false;
-  const int s = f.layout.text_scale;
+  const int s = text_scale > 0 ? text_scale : f.layout.text_scale;
   const float lh = f.text.line_height(s);
   const float sample = 22.f * s;  // sample length [px]
   const float pad = 6.f * s;
@@ -68,6 +68,7 @@ bool add_legend(FrameBuild& f, const PixelRect& box, std::span<const LegendEntry
       f.over.line(x0, y, x1, y, e.size, e.color);
     }
     f.text.add(e.label, x1 + pad, y - 0.5f * lh, s, palette::kText);
+    f.layout.legend_rows.push_back(e.label);
     y += lh + gap;
   }
   return true;

@@ -30,8 +30,8 @@ void densify(std::span<const float> xy, float step, std::vector<float>* out);
 /// Draws the box (into f.over) and its text where it covers none of the data points `avoid_xy` (see
 /// place_legend; `clear` px around them) and records it in f.layout.legend; false, drawing nothing, if
 /// it does not fit within `box` (wider than the box less its margins, or taller than half of it) or
-/// has no entries.
+/// has no entries. text_scale > 0: its text at that scale instead of the frame's (small panels).
 bool add_legend(FrameBuild& f, const PixelRect& box, std::span<const LegendEntry> entries,
-                std::span<const float> avoid_xy = {}, float clear = 0.f);
+                std::span<const float> avoid_xy = {}, float clear = 0.f, int text_scale = 0);
 
 }  // namespace sph::render

@@ -10,7 +10,7 @@
 namespace sph::render {
 
 void build_instances(const sph::Snapshot& snap, const ShownField& shown, const InstanceOptions& o,
-                     std::vector<float>* out) {
+                     std::vector<float>* out, std::vector<std::uint32_t>* index) {
   const std::size_t n = std::min(snap.count, snap.x.size());
   const std::vector<float>* values = shown.field ? &shown.field->values : nullptr;
   auto at = [](const std::vector<float>& v, std::size_t i, float fallback) { return i < v.size() ? v[i] : fallback; };
@@ -33,7 +33,8 @@ void build_instances(const sph::Snapshot& snap, const ShownField& shown, const I
       } else {
         p[0] = at(along, i, 0.f);
       }
-      p[1] = std::isfinite(value) ? value : 0.f;
+      const float y = o.y ? at(*o.y, i, kNaN) : value;
+      p[1] = std::isfinite(y) ? y : 0.f;
       p[2] = 0.f;
     } else {
       p[0] = snap.x[i];
@@ -42,8 +43,9 @@ void build_instances(const sph::Snapshot& snap, const ShownField& shown, const I
     }
     p[3] = o.radius_scale * at(snap.h, i, 0.f);
     p[4] = value;
-    p[5] = wall ? 1.f : 0.f;
+    p[5] = wall || o.solid ? 1.f : 0.f;
     p += kInstanceFloats;
+    if (index) index->push_back(static_cast<std::uint32_t>(i));
   }
   out->resize(static_cast<std::size_t>(p - out->data()));
 }

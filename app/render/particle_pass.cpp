@@ -73,28 +73,28 @@ void ParticlePass::upload_colormap(const GlApi& gl, Colormap cmap) {
   cmap_loaded_ = static_cast<int>(cmap);
 }
 
-void ParticlePass::draw(const GlApi& gl, const FrameBuild& f, Colormap cmap, const ValueRange& range,
+void ParticlePass::draw(const GlApi& gl, const ParticleDraw& d, Colormap cmap, const ValueRange& range,
                         const FixedColors& colors) {
-  if (f.instances.empty()) return;
+  if (d.instances->empty()) return;
   if (uses_cpu())
-    draw_cpu(gl, f, cmap, range, colors);
+    draw_cpu(gl, d, cmap, range, colors);
   else
-    draw_gpu(gl, f, cmap, range, colors);
+    draw_gpu(gl, d, cmap, range, colors);
 }
 
-void ParticlePass::draw_gpu(const GlApi& gl, const FrameBuild& f, Colormap cmap, const ValueRange& range,
+void ParticlePass::draw_gpu(const GlApi& gl, const ParticleDraw& d, Colormap cmap, const ValueRange& range,
                             const FixedColors& colors) {
-  const GlProgram& prog = f.shaded ? shaded_ : flat_;
+  const GlProgram& prog = d.shaded ? shaded_ : flat_;
   gl.UseProgram(prog.id());
   gl.ActiveTexture(GL_TEXTURE0);
   gl.BindTexture(GL_TEXTURE_1D, cmap_tex_);
   upload_colormap(gl, cmap);
   gl.Uniform1i(prog.uniform(gl, "u_cmap"), 0);
-  gl.UniformMatrix4fv(prog.uniform(gl, "u_view"), 1, GL_FALSE, f.camera.view.m.data());
-  gl.UniformMatrix4fv(prog.uniform(gl, "u_proj"), 1, GL_FALSE, f.camera.proj.m.data());
-  gl.Uniform2f(prog.uniform(gl, "u_viewport"), f.layout.plot.w, f.layout.plot.h);
-  gl.Uniform1f(prog.uniform(gl, "u_pixel_radius"), f.pixel_radius);
-  gl.Uniform1f(prog.uniform(gl, "u_min_radius"), f.min_radius);
+  gl.UniformMatrix4fv(prog.uniform(gl, "u_view"), 1, GL_FALSE, d.camera->view.m.data());
+  gl.UniformMatrix4fv(prog.uniform(gl, "u_proj"), 1, GL_FALSE, d.camera->proj.m.data());
+  gl.Uniform2f(prog.uniform(gl, "u_viewport"), d.width, d.height);
+  gl.Uniform1f(prog.uniform(gl, "u_pixel_radius"), d.pixel_radius);
+  gl.Uniform1f(prog.uniform(gl, "u_min_radius"), d.min_radius);
   gl.Uniform2f(prog.uniform(gl, "u_range"), range.min, range.max);
   const Rgba& bad = colors.invalid;
   const Rgba& wall = colors.wall;
@@ -103,15 +103,16 @@ void ParticlePass::draw_gpu(const GlApi& gl, const FrameBuild& f, Colormap cmap,
 
   gl.BindVertexArray(vao_);
   gl.BindBuffer(GL_ARRAY_BUFFER, vbo_);
-  gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(f.instances.size() * sizeof(float)), f.instances.data(),
+  const std::vector<float>& instances = *d.instances;
+  gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(instances.size() * sizeof(float)), instances.data(),
                 GL_STREAM_DRAW);
-  if (f.shaded) {
+  if (d.shaded) {
     gl.Enable(GL_DEPTH_TEST);
     gl.DepthFunc(GL_LESS);
     gl.DepthMask(GL_TRUE);
     gl.Disable(GL_BLEND);
   }
-  const GLsizei count = static_cast<GLsizei>(f.instances.size() / kInstanceFloats);
+  const GLsizei count = static_cast<GLsizei>(instances.size() / kInstanceFloats);
   gl.DrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, count);
   gl.Disable(GL_DEPTH_TEST);
   gl.Enable(GL_BLEND);
@@ -120,20 +121,20 @@ void ParticlePass::draw_gpu(const GlApi& gl, const FrameBuild& f, Colormap cmap,
   gl.UseProgram(0);
 }
 
-void ParticlePass::draw_cpu(const GlApi& gl, const FrameBuild& f, Colormap cmap, const ValueRange& range,
+void ParticlePass::draw_cpu(const GlApi& gl, const ParticleDraw& d, Colormap cmap, const ValueRange& range,
                             const FixedColors& colors) {
   SplatParams p;
-  p.view = f.camera.view;
-  p.proj = f.camera.proj;
-  p.width = static_cast<int>(f.layout.plot.w);
-  p.height = static_cast<int>(f.layout.plot.h);
-  p.pixel_radius = f.pixel_radius;
-  p.min_radius = f.min_radius;
+  p.view = d.camera->view;
+  p.proj = d.camera->proj;
+  p.width = static_cast<int>(d.width);
+  p.height = static_cast<int>(d.height);
+  p.pixel_radius = d.pixel_radius;
+  p.min_radius = d.min_radius;
   p.range = range;
   p.cmap = cmap;
   p.colors = colors;
-  p.shaded = f.shaded;
-  splat_particles(f.instances, p, &splat_);
+  p.shaded = d.shaded;
+  splat_particles(*d.instances, p, &splat_);
 
   gl.UseProgram(image_.id());
   gl.ActiveTexture(GL_TEXTURE0);

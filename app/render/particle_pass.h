@@ -19,6 +19,22 @@
 
 namespace sph::render {
 
+/// One set of particles to draw: the instances, their camera and the size of the viewport they go to.
+struct ParticleDraw {
+  const std::vector<float>* instances = nullptr;
+  const CameraMatrices* camera = nullptr;
+  float width = 0.f, height = 0.f;  ///< viewport [px]
+  float pixel_radius = 0.f, min_radius = 1.f;
+  bool shaded = false;
+  /// The frame's primary set (FrameBuild::instances in layout.plot).
+  static ParticleDraw primary(const FrameBuild& f) {
+    return {&f.instances, &f.camera, f.layout.plot.w, f.layout.plot.h, f.pixel_radius, f.min_radius, f.shaded};
+  }
+  static ParticleDraw of(const ParticleBatch& b) {
+    return {&b.instances, &b.camera, b.rect.w, b.rect.h, b.pixel_radius, b.min_radius, b.shaded};
+  }
+};
+
 class ParticlePass {
  public:
   bool init(const GlApi& gl, std::string* err);
@@ -26,14 +42,14 @@ class ParticlePass {
   void set_path(ParticlePath path) { path_ = path; }
   bool uses_cpu() const { return path_ == ParticlePath::Cpu || (path_ == ParticlePath::Auto && software_gl_); }
 
-  /// Draws f.instances into the current viewport (which must be f.layout.plot). `colors.invalid`
+  /// Draws d's instances into the current viewport (which must be d.width x d.height). `colors.invalid`
   /// colours non-finite values (and every particle when no field is shown), `colors.wall` walls.
-  void draw(const GlApi& gl, const FrameBuild& f, Colormap cmap, const ValueRange& range, const FixedColors& colors);
+  void draw(const GlApi& gl, const ParticleDraw& d, Colormap cmap, const ValueRange& range, const FixedColors& colors);
 
  private:
-  void draw_gpu(const GlApi& gl, const FrameBuild& f, Colormap cmap, const ValueRange& range,
+  void draw_gpu(const GlApi& gl, const ParticleDraw& d, Colormap cmap, const ValueRange& range,
                 const FixedColors& colors);
-  void draw_cpu(const GlApi& gl, const FrameBuild& f, Colormap cmap, const ValueRange& range,
+  void draw_cpu(const GlApi& gl, const ParticleDraw& d, Colormap cmap, const ValueRange& range,
                 const FixedColors& colors);
   void upload_colormap(const GlApi& gl, Colormap cmap);
 

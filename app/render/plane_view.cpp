@@ -37,7 +37,7 @@ void compose_plane(FrameBuild& f, const sph::Snapshot& snap, const ViewSettings&
   }
 
   const bool from_h = view.size_mode == SizeMode::Smoothing && has_smoothing_lengths(snap);
-  build_instances(snap, shown, {Placement::Positions, 0, view.h_scale, view.show_walls}, &f.instances);
+  build_instances(snap, shown, {Placement::Positions, 0, view.h_scale, view.show_walls}, &f.instances, &f.index);
   f.pixel_radius = from_h ? 0.f : view.point_px;
   f.min_radius = view.min_radius_px;
 

@@ -3,8 +3,10 @@
 #include <cmath>
 
 #include "chrome.h"
+#include "compare_view.h"
 #include "font_atlas.h"
 #include "frame_build.h"
+#include "highlight.h"
 #include "orbit_view.h"
 #include "overlay_pass.h"
 #include "palette.h"
@@ -101,34 +103,59 @@ void Renderer::shutdown() {
 }
 
 void Renderer::render(const sph::Snapshot& snap, const ViewSettings& view, int width, int height) {
+  FrameScene scene;
+  scene.a = &snap;
+  render(scene, view, width, height);
+}
+
+void Renderer::render(const FrameScene& in, const ViewSettings& view, int width, int height) {
   Impl& d = *impl_;
-  if (!d.ready || width <= 0 || height <= 0) return;
-  const sph::Snapshot* s = &snap;
-  if (view.show_trails && Trails::applies(snap)) {
-    d.trails.record(snap);
-    d.decorated = snap;
+  if (!d.ready || width <= 0 || height <= 0 || in.a == nullptr) return;
+  FrameScene scene = in;
+  if (view.show_trails && !scene.b && Trails::applies(*scene.a)) {
+    d.trails.record(*scene.a);
+    d.decorated = *scene.a;
     d.trails.decorate(d.decorated);
-    s = &d.decorated;
+    scene.a = &d.decorated;
   }
-  const ShownField shown = choose_field(*s, view, &d.log_field);
-  compose(d.frame, *s, view, shown, width, height);
+  ShownField shown = choose_field(*scene.a, view, &d.log_field);
+  if (scene.b && shown.field) shown.range = compare_range(*scene.a, *scene.b, view, *shown.field);
+  compose(d.frame, scene, view, shown, width, height);
   draw(d, shown, width, height);
 }
 
-void Renderer::compose(FrameBuild& f, const sph::Snapshot& snap, const ViewSettings& view, const ShownField& shown,
+std::optional<Picked> Renderer::pick(float px, float py, float max_px) const {
+  return pick_particle(impl_->frame, px, py, max_px);
+}
+
+std::optional<std::array<float, 2>> Renderer::pixel_of(int run, std::uint32_t index) const {
+  return locate_particle(impl_->frame, run, index);
+}
+
+void Renderer::compose(FrameBuild& f, const FrameScene& scene, const ViewSettings& view, const ShownField& shown,
                        int width, int height) {
+  const sph::Snapshot& snap = *scene.a;
   f.clear();
-  layout_chrome(f, shown, width, height, view.text_scale);
-  if (snap.dim == 1)
-    compose_profile(f, snap, view, shown, 0);
-  else if (draws_profile(snap.dim, view.profile_axis))
-    compose_profile(f, snap, view, shown, view.profile_axis);
+  const int axis = snap.dim == 1 ? 0 : view.profile_axis;
+  const bool profile = draws_profile(snap.dim, axis);
+  std::vector<std::string> fields = panel_fields(snap, view.panels);
+  if (fields.empty()) fields.push_back(shown.field ? shown.field->name : view.color_by);
+  // a comparison's profiles show the runs in two colours, not the colour map: no colour bar
+  const ShownField bar = profile && scene.b ? ShownField{} : shown;
+  layout_chrome(f, bar, width, height, view.text_scale);
+  if (profile && !scene.b && fields.size() <= 1)
+    compose_profile(f, snap, view, shown, axis);
+  else if (profile)
+    compose_profile_panels(f, scene, view, shown, axis, fields);
+  else if (scene.b)
+    compose_compare(f, scene, view, shown);
   else if (snap.dim == 3)
     compose_orbit(f, snap, view, shown);
   else
     compose_plane(f, snap, view, shown);
-  add_colorbar(f, shown);
+  add_colorbar(f, bar);
   add_title(f, snap, shown);
+  add_highlight(f, scene.highlight);
 }
 
 void Renderer::draw(Impl& d, const ShownField& shown, int width, int height) {
@@ -151,23 +178,36 @@ void Renderer::draw(Impl& d, const ShownField& shown, int width, int height) {
   gl.ClearDepth(1.0);
   gl.DepthMask(GL_TRUE);
   gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  if (f.fill.w > 0.f && f.fill.h > 0.f) {  // plot background: a scissored clear is the cheapest fill
-    scissor(f.fill);
+  auto clear_fill = [&](const PixelRect& r) {  // plot background: a scissored clear is the cheapest fill
+    if (!(r.w > 0.f && r.h > 0.f)) return;
+    scissor(r);
     gl.ClearColor(fill.r, fill.g, fill.b, 1.f);
     gl.Clear(GL_COLOR_BUFFER_BIT);
     gl.Disable(GL_SCISSOR_TEST);
-  }
+  };
+  clear_fill(f.fill);
+  for (const ParticleBatch& b : f.batches) clear_fill(b.fill);
 
   d.overlay.draw_shapes(gl, f.under, width, height);
 
   const PixelRect& plot = f.layout.plot;
-  set_viewport(gl, plot, height);
-  d.particles.draw(gl, f, shown.cmap, shown.range, {shown.field ? palette::kInvalid : palette::kNoField, palette::kWall});
-  gl.Viewport(0, 0, width, height);
-
+  if (!f.instances.empty()) {
+    set_viewport(gl, plot, height);
+    d.particles.draw(gl, ParticleDraw::primary(f), shown.cmap, shown.range,
+                     {shown.field ? palette::kInvalid : palette::kNoField, palette::kWall});
+    gl.Viewport(0, 0, width, height);
+  }
   scissor(plot);
   d.overlay.draw_shapes(gl, f.clipped, width, height);
   gl.Disable(GL_SCISSOR_TEST);
+  for (const ParticleBatch& b : f.batches) {  // the other plots: panels, run B, the difference map
+    set_viewport(gl, b.rect, height);
+    d.particles.draw(gl, ParticleDraw::of(b), b.cmap, b.range, b.colors);
+    gl.Viewport(0, 0, width, height);
+    scissor(b.rect);
+    d.overlay.draw_shapes(gl, b.clipped, width, height);
+    gl.Disable(GL_SCISSOR_TEST);
+  }
 
   d.overlay.draw_shapes(gl, f.over, width, height);
   d.overlay.draw_text(gl, f.text, width, height);

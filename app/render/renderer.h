@@ -9,10 +9,14 @@
 //
 // Use from the thread that owns the GL context; destroy (or shutdown()) while it is current.
 #pragma once
+#include <array>
+#include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "frame_layout.h"
+#include "frame_scene.h"
 #include "gl_api.h"
 #include "particle_path.h"
 #include "view_settings.h"
@@ -43,6 +47,15 @@ class Renderer {
   /// A colour-by field missing from the snapshot falls back to the first field, with a warning in the
   /// title row (see missing_field_message in field_range.h to report it elsewhere).
   void render(const sph::Snapshot& snap, const ViewSettings& view, int width, int height);
+  /// The same for a FrameScene: one run, or the two of a comparison (profiles: both runs' dots in two
+  /// colours with their L1 errors in the legend; 2D: A, B and the difference map B - A; 3D: A and B),
+  /// with ViewSettings::panels (profiles: one panel per field) and the inspector's highlight.
+  void render(const FrameScene& scene, const ViewSettings& view, int width, int height);
+  /// The particle the last frame drew nearest to pixel (px, py) of the frame (top-left origin), if one
+  /// is within max_px: picking with the mouse.
+  std::optional<Picked> pick(float px, float py, float max_px) const;
+  /// Where the last frame drew particle `index` of run 0 (A) or 1 (B) [frame px]; nullopt if nowhere.
+  std::optional<std::array<float, 2>> pixel_of(int run, std::uint32_t index) const;
 
   /// Chooses how particles are drawn (default Auto: on the CPU for software GL). Both give the same
   /// picture to within a few 1/255 at antialiased edges.
@@ -58,7 +71,7 @@ class Renderer {
  private:
   struct Impl;
   /// CPU: layout, overlay geometry, particle instances.
-  static void compose(FrameBuild& f, const sph::Snapshot& snap, const ViewSettings& view, const ShownField& shown,
+  static void compose(FrameBuild& f, const FrameScene& scene, const ViewSettings& view, const ShownField& shown,
                       int width, int height);
   /// GL: clears, overlay under the particles, particles, overlay over them, text.
   static void draw(Impl& d, const ShownField& shown, int width, int height);

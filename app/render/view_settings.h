@@ -3,6 +3,7 @@
 // Plain values with defaults; the GUI edits its own copy, the headless program fills one from flags.
 #pragma once
 #include <string>
+#include <vector>
 
 namespace sph::render {
 
@@ -53,6 +54,9 @@ struct ViewSettings {
   bool show_outlines = true;   ///< 2D: draw the snapshot's reference outlines over the particles
   int profile_axis = -1;       ///< 2D: -1 = the plane view; 0 / 1 = profile of the field against x / y
   int text_scale = 0;          ///< integer pixel scale of the 13 px font; 0 = from the frame height
+  /// Profiles: one panel per field, e.g. {"rho", "v", "p", "u"} as the seed documents show shock tubes
+  /// ("v" is v_x in 1D, |v| otherwise); empty: the colour-by field alone.
+  std::vector<std::string> panels;
 };
 
 }  // namespace sph::render

@@ -33,6 +33,7 @@ SceneSpec dam_break_scene() {
   SceneSpec s;
   s.name = "dam_break";
   s.category = "free-surface liquids (seed 001)";
+  s.units = UnitSystem::si();
   s.description = "water column a x 2a collapses in a 4a tank; surge front vs Martin & Moyce 1952, Koshizuka & Oka 1996";
   s.dim = 2;
   s.params = {{"a", 1.0, 0.01, 100.0, false, "column width a [m] (height 2a, tank length 4a)", "m"},
@@ -66,6 +67,7 @@ SceneSpec dam_break_slope_scene() {
   SceneSpec s;
   s.name = "dam_break_slope";
   s.category = "free-surface liquids (seed 001)";
+  s.units = UnitSystem::si();
   s.description = "seed 001 §7.2: a column released towards a 30 degree slope, Lennard-Jones walls, dt = 0.15 ms; comes to rest";
   s.dim = 2;
   s.params = {{"width", 0.3, 0.01, 10.0, false, "column width [m]", "m"},

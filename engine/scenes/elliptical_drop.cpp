@@ -64,6 +64,7 @@ SceneSpec elliptical_drop_scene() {
   SceneSpec s;
   s.name = "elliptical_drop";
   s.category = "free-surface liquids (seed 001)";
+  s.units = UnitSystem::si();
   s.description = "seed 001 §7.1: water circle with v = (-100x, 100y) becomes an ellipse; ODE semi-axes as reference";
   s.dim = 2;
   Params& d = s.defaults;

@@ -14,6 +14,7 @@ SceneSpec hydrostatic_tank_scene() {
   SceneSpec s;
   s.name = "hydrostatic_tank";
   s.category = "free-surface liquids (seed 001)";
+  s.units = UnitSystem::si();
   s.description = "water at rest in a 1 m tank under gravity; pressure against rho0 g (H - y)";
   s.dim = 2;
   s.params = {{"width", 1.0, 0.01, 100.0, false, "tank width [m]", "m"},

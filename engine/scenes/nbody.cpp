@@ -47,6 +47,7 @@ SceneSpec two_body_fall_scene() {
   SceneSpec s;
   s.name = "two_body_fall";
   s.category = "gravity / N-body (seed 003 ch. 2)";
+  s.units = UnitSystem::astronomical();
   s.description = "seed 003 §2.3: the Earth released at rest 1 AU from the Sun falls in; against the closed form eq. 2.17";
   s.dim = 2;
   s.params = {{"r0", 1.0, 1e-3, 1e3, false, "initial separation [AU]", "AU"},
@@ -65,6 +66,7 @@ SceneSpec kepler_scene() {
   SceneSpec s;
   s.name = "kepler";
   s.category = "gravity / N-body (seed 003 ch. 2)";
+  s.units = UnitSystem::astronomical();
   s.description = "seed 003 §2.4: Sun and Earth, v = 6.218 AU/yr (or any eccentricity); against the Kepler orbit";
   s.dim = 2;
   s.params = {{"r0", 1.0, 1e-3, 1e3, false, "initial separation (aphelion when e >= 0) [AU]", "AU"},
@@ -86,6 +88,7 @@ SceneSpec solar_system_scene() {
   SceneSpec s;
   s.name = "solar_system";
   s.category = "gravity / N-body (seed 003 ch. 2)";
+  s.units = UnitSystem::astronomical();
   s.description = "seed 003 §2.5.1: the Sun, eight planets and Pluto from the seed's table; energy and angular momentum";
   s.dim = 2;
   make_nbody(s, GravityType::Direct, kG);

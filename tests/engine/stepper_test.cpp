@@ -96,6 +96,13 @@ class FrameChecker {
     if (f.config.scene == nullptr || f.config.scene->name != s.scene) fail(f, "config of another scene");
     if (f.params_version > 0 && !same(f.config.params, params_for(f.params_version, base_)))
       fail(f, "params do not match params_version " + std::to_string(f.params_version));
+    if (f.comparing) {  // run B: at A's time, with A's params but its override (visc.alpha = 0.25)
+      if (f.compare.snapshot.t != s.t) fail(f, "run B at another time");
+      Params b = f.config.params;
+      b.visc.alpha = 0.25;
+      if (!same(f.compare.config.params, b)) fail(f, "run B's params are not A's with its override");
+      if (f.compare.history.size() != f.history.size()) fail(f, "run B's history is not sampled with A's");
+    }
     if (f.world_serial == world_) {
       if (s.step < step_ || s.t < t_) fail(f, "step or time went back within one World");
       if (s.count != count_) fail(f, "particle count changed within one World");
@@ -176,6 +183,7 @@ TEST(Stepper, StressParamsAndCommandsKeepFramesConsistent) {
       case 25: s.set_stop_at_end(i % 100 == 25); break;
       case 30: s.set_scene_value("n_left", 30 + 5 * (i % 3)); break;
       case 35: s.set_real_time_factor(i % 100 == 35 ? 100.0 : 0.0); break;
+      case 40: s.set_compare(i % 100 == 40 ? std::vector<std::string>{"visc.alpha=0.25"} : std::vector<std::string>{}); break;
       case 45: {
         RunConfig next = RunConfig::from_scene(i % 100 == 45 ? "shocktube_castellanos" : "sod");
         next.set("scene.n_left", "30", "test");
@@ -387,6 +395,71 @@ TEST(Stepper, DivergencePausesAndReportsTheParticle) {
   s.reset(cfg.params);
   ASSERT_TRUE(wait_for(s, [](const StepperFrame& g) { return g.world_serial == 2 && !g.diverged; }));
   EXPECT_TRUE(s.latest()->error.empty());
+}
+
+// A/B comparison: both runs restart from t = 0, B with its overrides, and stay at the same times; posted
+// params reach both (B keeps its overrides); a refused override changes nothing.
+TEST(Stepper, CompareStepsBothRunsToTheSameTimes) {
+  RunConfig cfg = small_sod();
+  cfg.params.time.t_end = 0.03;
+  Stepper s(cfg, options());
+  ASSERT_TRUE(wait_for(s, [](const StepperFrame& f) { return f.snapshot.step > 2; }));
+  s.set_compare({"kernel.type=M6", "visc.alpha=0"});
+  ASSERT_TRUE(wait_for(s, [](const StepperFrame& f) { return f.comparing && f.at_end; }));
+  const StepperFrame* f = s.latest();
+  EXPECT_EQ(f->world_serial, 2u);  // A restarted with B
+  EXPECT_NEAR(f->snapshot.t, 0.03, 1e-12);
+  EXPECT_EQ(f->compare.snapshot.t, f->snapshot.t);
+  EXPECT_EQ(f->config.params.kernel.type, KernelType::M4);
+  EXPECT_EQ(f->compare.config.params.kernel.type, KernelType::M6);
+  EXPECT_EQ(f->compare.config.params.visc.alpha, 0.0);
+  EXPECT_EQ(f->compare.history.size(), f->history.size());
+  EXPECT_EQ(f->compare.ref_values.size(), f->ref_columns.size());
+  EXPECT_NE(f->compare.snapshot.x, f->snapshot.x);  // another kernel: another flow
+  // a posted edit reaches both; B keeps its overrides
+  Params p = f->config.params;
+  p.visc.beta = 1.0;
+  p.kernel.type = KernelType::M5;
+  const std::uint64_t v = s.post_params(p);
+  ASSERT_TRUE(wait_for(s, [&](const StepperFrame& g) { return g.params_version == v; }));
+  f = s.latest();
+  EXPECT_EQ(f->compare.config.params.visc.beta, 1.0);
+  EXPECT_EQ(f->compare.config.params.kernel.type, KernelType::M6);
+  EXPECT_EQ(f->config.params.kernel.type, KernelType::M5);
+  // a refused override: reported, nothing rebuilt
+  s.set_compare({"kernel.type=M9"});
+  ASSERT_TRUE(wait_for(s, [](const StepperFrame& g) { return g.error.find("M9") != std::string::npos; }));
+  f = s.latest();
+  EXPECT_EQ(f->world_serial, 2u);
+  EXPECT_TRUE(f->comparing);
+  s.set_compare({});
+  ASSERT_TRUE(wait_for(s, [](const StepperFrame& g) { return !g.comparing; }));
+}
+
+// The inspector's channel: frames carry World::inspect of the asked id for the state they show (and of
+// run B while comparing).
+TEST(Stepper, InspectionFollowsTheState) {
+  Stepper s(small_sod(), options(false));
+  ASSERT_TRUE(wait_for(s, [](const StepperFrame&) { return true; }));
+  s.set_inspect(7);
+  s.step_once();
+  ASSERT_TRUE(wait_for(s, [](const StepperFrame& f) { return f.snapshot.step == 1 && f.inspection.has_value(); }));
+  const StepperFrame* f = s.latest();
+  EXPECT_EQ(f->inspection->id, 7);
+  EXPECT_EQ(f->inspection->step, 1);
+  EXPECT_FLOAT_EQ(static_cast<float>(f->inspection->x.x), f->snapshot.x[7]);
+  EXPECT_FALSE(f->inspection->terms.empty());
+  s.set_compare({"kernel.type=M6"});
+  s.step_once();
+  ASSERT_TRUE(wait_for(s, [](const StepperFrame& g) {
+    return g.comparing && g.snapshot.step == 1 && g.inspection && g.compare.inspection && g.inspection->step == 1;
+  }));
+  f = s.latest();
+  EXPECT_EQ(f->compare.inspection->id, 7);
+  EXPECT_NE(f->compare.inspection->a_total.x, f->inspection->a_total.x);
+  s.set_inspect(-1);
+  s.step_once();
+  ASSERT_TRUE(wait_for(s, [](const StepperFrame& g) { return g.snapshot.step == 2 && !g.inspection; }));
 }
 
 }  // namespace

@@ -3,25 +3,25 @@
 # usage: cli_test.sh PATH_TO_SPH REPO_ROOT
 set -u
 sph=$1; root=$2
-work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
-fails=0; passes=0
-check() {  # check NAME EXPECTED_RC ACTUAL_RC
-  if [ "$2" -eq "$3" ]; then passes=$((passes + 1)); else echo "FAIL $1: exit $3, expected $2"; fails=$((fails + 1)); fi
-}
-ok() {  # ok NAME CONDITION...
-  if "${@:2}"; then passes=$((passes + 1)); else echo "FAIL $1"; fails=$((fails + 1)); fi
-}
+source "$(dirname "$0")/test_lib.sh"
 
 # a run writes every file, the last particle file at the end time
 "$sph" run sod --set scene.n_left=100 --out "$work/sod" > "$work/sod.log"; check "run sod" 0 $?
-for f in scene.json diagnostics.csv errors.csv particles_00000.csv particles_00004.csv; do
+for f in scene.json diagnostics.csv errors.csv particles_00000.csv particles_00004.csv csv_meta.json; do
   ok "sod writes $f" test -s "$work/sod/$f"
 done
 ok "no particle file past the end" test ! -e "$work/sod/particles_00005.csv"
-ok "last particle file is at t = 0.2" grep -q "^# t = 0.2," "$work/sod/particles_00004.csv"
-ok "diagnostics header" grep -q "^step,t,dt,E_kin,E_int,E_pot,E_tot,px,py,pz,Lx,Ly,Lz" "$work/sod/diagnostics.csv"
-ok "particle header" grep -q "^id,x,y,z,vx,vy,vz,m,rho,p,u,h$" "$work/sod/particles_00004.csv"
-ok "errors header says what L1 is" grep -q "^# L1 = mean over particles" "$work/sod/errors.csv"
+ok "last particle file is at t = 0.2" grep -A1 '"file": "particles_00004.csv"' "$work/sod/csv_meta.json" | grep -q '"t": 0.2,'
+# plain CSVs: the first line is the header (the comment lines went to csv_meta.json)
+ok "diagnostics header" test "$(head -1 "$work/sod/diagnostics.csv" | cut -d, -f1-13)" = "step,t,dt,E_kin,E_int,E_pot,E_tot,px,py,pz,Lx,Ly,Lz"
+ok "particle header" test "$(head -1 "$work/sod/particles_00004.csv")" = "id,x,y,z,vx,vy,vz,m,rho,p,u,h"
+ok "errors header" test "$(head -1 "$work/sod/errors.csv" | cut -d, -f1-3)" = "t,count,L1_rho"
+ok "no comment line in any CSV" test -z "$(grep -l '^#' "$work/sod"/*.csv)"
+ok "csv_meta.json says what L1 is" grep -q '"errors.csv": "L1 = mean over particles' "$work/sod/csv_meta.json"
+"$sph" run sod --set scene.n_left=100 --until 0.05 --csv-comments --out "$work/comments" > /dev/null; check "--csv-comments" 0 $?
+ok "--csv-comments: the time line" grep -q "^# t = 0.05," "$work/comments/particles_00001.csv"
+ok "--csv-comments: what L1 is" grep -q "^# L1 = mean over particles" "$work/comments/errors.csv"
+ok "--csv-comments: no csv_meta.json" test ! -e "$work/comments/csv_meta.json"
 ok "summary prints L1" grep -q "L1_rho = " "$work/sod.log"
 # scene.json is a complete scene file: running it again gives the same result
 "$sph" run "$work/sod/scene.json" --out "$work/again" > /dev/null; check "rerun scene.json" 0 $?
@@ -143,11 +143,11 @@ ok "cfl 0.7: names time.cfl" grep -q "lower time.cfl" "$work/cfl7.err"
 "$sph" run sod --set time.cfl=0.9 --out "$work/cfl9" > /dev/null 2> "$work/cfl9.err"; check "cfl 0.9 sod" 5 $?
 ok "cfl 0.9: says why" grep -q "total energy grew" "$work/cfl9.err"
 ok "cfl 0.9: names a particle" grep -q "particle [0-9]* has the largest acceleration" "$work/cfl9.err"
-ok "cfl 0.9: no runaway energy written" awk -F, '!/^#/ && NR > 2 { if ($7 > 1.6 || $7 < 1.2) bad = 1 } END { exit bad }' "$work/cfl9/diagnostics.csv"
+ok "cfl 0.9: no runaway energy written" awk -F, 'NR > 1 { if ($7 > 1.6 || $7 < 1.2) bad = 1 } END { exit bad }' "$work/cfl9/diagnostics.csv"
 "$sph" run toro1 --set scene.x_lo=0 --set scene.n_left=300 --out "$work/t1" > /dev/null 2> "$work/t1.err"; check "toro1 on [0,1]" 0 $?
 ok "toro1 on [0,1]: reference warning" grep -q "\[reference\]" "$work/t1.err"
 ok "toro1 on [0,1]: errors.csv marks invalid rows" test "$(tail -1 "$work/t1/errors.csv" | awk -F, '{print $NF}')" = 0
-ok "toro1 on [0,1]: first rows valid" test "$(grep -v '^#' "$work/t1/errors.csv" | sed -n 2p | awk -F, '{print $NF}')" = 1
+ok "toro1 on [0,1]: first rows valid" test "$(sed -n 2p "$work/t1/errors.csv" | awk -F, '{print $NF}')" = 1
 # numeric flags: NaN, inf and out-of-range values are usage errors naming the flag
 bad until_nan 2 "until" run sod --until nan
 bad until_negative 2 "until" run sod --until -3
@@ -174,6 +174,68 @@ bad bench_bad_kernel 3 "M9" bench sod --kernels M9 --values 50,100
 bad bench_bad_integrator 3 "verlet" bench sod --integrators verlet --values 50,100
 bad bench_no_reference 3 "reference" bench box_lattice
 bad bench_junk_value 3 "abc" bench sod --values 50,abc
+
+# A/B comparison: run B stepped to A's times, its files in OUT/B, its L1 beside A's in the summary
+"$sph" run sod --set scene.n_left=100 --compare-set kernel.type=M6 --out "$work/ab" > "$work/ab.log"
+check "compare" 0 $?
+ok "compare: B's files" test -s "$work/ab/B/particles_00004.csv"
+ok "compare: B's scene is M6" grep -q '"kernel.type": "M6"' "$work/ab/B/scene.json"
+ok "compare: A stays M4" grep -q '"kernel.type": "M4"' "$work/ab/scene.json"
+ok "compare: B at A's end time" grep -q '"t": 0.2,' "$work/ab/B/csv_meta.json"
+ok "compare: B's summary with its L1" grep -q "^run B: kernel.type=M6: t = 0.2 .*L1_rho = " "$work/ab.log"
+ok "compare: A's files as without B" cmp -s "$work/ab/particles_00004.csv" "$work/sod/particles_00004.csv"
+# a scene file as run B: its differences name it
+"$sph" run sod --set scene.n_left=100 --until 0 --compare "$root/assets/scenes/sod.json" --compare-set visc.alpha=0.5 \
+  --set visc.alpha=1 > "$work/abf.log"; check "compare with a file" 0 $?
+ok "compare with a file: label" grep -q "^run B: visc.alpha=0.5, scene.n_left=400" "$work/abf.log"
+bad compare_other_scene 3 "same scene" run sod --compare lax
+bad compare_bad_key 3 "nope" run sod --compare-set nope=1
+bad compare_not_kv 3 "key=value" run sod --compare-set M6
+if "$sph" run --help | grep -q -- "--frames"; then
+  env -u DISPLAY "$sph" run sod --set scene.n_left=100 --compare-set visc.alpha=0 --frames "$work/abfr" --every 0.2 \
+    --panels rho,v,p,u --size 640x480 > /dev/null
+  check "compare frames with panels" 0 $?
+  ok "compare frames" test "$(png_size "$work/abfr/frame_00001.png")" = "640x480"
+  bad bad_panel 2 "nope" run sod --frames "$work/bp" --panels rho,nope
+fi
+
+# help that teaches: a scene's stages and parameters, every key, and the nearest valid name for a typo
+"$sph" help sod > "$work/help.txt"; check "help sod" 0 $?
+for word in "physics.density" "kernel.type" "gas.gamma" "visc.alpha" "scene.n_left" "L1_rho" "seed 000 eq. 3.3.23" "range ["; do
+  ok "help sod mentions $word" grep -qF "$word" "$work/help.txt"
+done
+"$sph" help > "$work/scenes.txt"; check "help" 0 $?
+ok "help lists the scenes" grep -q "^  kelvin_helmholtz " "$work/scenes.txt"
+"$sph" params > "$work/params.txt"; check "params" 0 $?
+ok "params lists every key" test "$(grep -c '^  [a-z_]*\.[a-z_0-9]* ' "$work/params.txt")" -ge 40
+bad typo_key 3 "did you mean scene.n_left?" run sod --set scene.n_lef=100
+bad typo_key_no_group 3 "did you mean scene.n_left?" run sod --set n_left=100
+bad typo_run_key 3 "did you mean visc.alpha?" run sod --set visc.alpah=1
+bad typo_scene 3 "did you mean sod?" run sodd
+bad typo_flag 2 "did you mean --vtu?" run sod --vtk
+bad typo_command 2 "did you mean run?" rnu sod
+"$sph" help keplr > /dev/null 2> "$work/help_typo.err"; check "help of a typo'd scene" 3 $?
+ok "help keplr: suggestion" grep -q "did you mean kepler?" "$work/help_typo.err"
+"$sph" run sod --set scene.n_left=50 --until 0 --vtu 2> "$work/vtu.err" > /dev/null; check "--vtu without --out" 2 $?
+ok "--vtu without --out: says why" grep -q -- "--vtu needs --out" "$work/vtu.err"
+bad hdf5_of_fpm 2 "finite pointset" run burgers_upwind --hdf5
+"$sph" export-ics sod --format swfit --out "$work/x.hdf5" 2> "$work/exf.err"; check "export-ics bad format" 2 $?
+ok "export-ics bad format: suggestion" grep -q "did you mean swift?" "$work/exf.err"
+ok "export-ics bad format: nothing written" test ! -e "$work/x.hdf5"
+"$sph" export-ics burgers_upwind --out "$work/b.hdf5" 2> "$work/exb.err"; check "export-ics of an FPM scene" 3 $?
+ok "export-ics of an FPM scene: nothing written" test ! -e "$work/b.hdf5"
+
+# the EGL backend draws the frames a machine without OSMesa would (Mesa 25.1 removed OSMesa)
+if "$sph" run --help | grep -q -- "--gl"; then
+  for gl in osmesa egl; do
+    env -u DISPLAY "$sph" run sod --set scene.n_left=100 --until 0.1 --frames "$work/gl_$gl" --every 0.1 --size 640x360 \
+      --gl $gl > /dev/null; check "frames --gl $gl" 0 $?
+  done
+  read -r worst differ < <(python3 "$root/tests/headless/png_pixels.py" --diff "$work/gl_osmesa/frame_00001.png" "$work/gl_egl/frame_00001.png")
+  ok "EGL frame = OSMesa frame within 2/255 (largest difference $worst, $differ pixels differ)" test "$worst" -le 2
+  bad typo_gl 2 "did you mean egl?" run sod --frames "$work/gl_bad" --gl egll
+  bad typo_color_by 2 "did you mean rho?" run sod --frames "$work/cb" --color-by rhoo
+fi
 
 echo "$passes passed, $fails failed"
 [ "$fails" -eq 0 ]

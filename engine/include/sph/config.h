@@ -3,6 +3,7 @@
 // ConfigError naming the file and key; nothing has been written at that point.
 #pragma once
 #include <map>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -17,6 +18,10 @@ struct ConfigError : std::runtime_error {
 
 struct RunConfig {
   const SceneSpec* scene = nullptr;
+  /// A scene made at run time (an HDF5 initial condition): `scene` points into it, copies share it.
+  std::shared_ptr<const SceneSpec> owned_scene;
+  /// The file an initial-condition scene was read from (absolute): the "scene" of to_json().
+  std::string source_file;
   Params params;
   SceneValues values;
   /// Run-parameter keys set explicitly (by a file or --set), with where: checked by validate().
@@ -27,7 +32,10 @@ struct RunConfig {
   /// A JSON file {"scene": NAME, "params": {key: value, ...}} (keys as in set()). Call validate()
   /// once every override is applied.
   static RunConfig from_file(const std::string& path);
-  /// A built-in name or, if it ends in .json or names an existing file, a scene file.
+  /// The same from JSON text; `origin` names where it came from in messages.
+  static RunConfig from_json_text(const std::string& text, const std::string& origin);
+  /// A built-in name, an HDF5 initial condition (.hdf5, .h5: load_hdf5_ic) or, if it ends in .json or
+  /// names an existing file, a scene file.
   static RunConfig load(const std::string& name_or_file);
 
   /// Override one parameter: a run parameter key (param_table, or its old flat alias) or

@@ -46,8 +46,9 @@ ConvergenceStudy resolve_study(const RunConfig& base, const ConvergenceStudy& as
 /// a bad value of the key and DivergedError when a run blows up.
 ConvergenceResult run_convergence(const RunConfig& base, const ConvergenceStudy& study,
                                   const std::function<void(const ConvergenceRun&)>& progress = {});
-/// CSV (with a # comment line naming the scene, column and time) and a markdown table like seed 002's Table 1.
-std::string convergence_csv(const ConvergenceResult& r);
+/// CSV (a header row, then one row per run; with `comment`, first a # line naming the scene, column and
+/// time, as earlier versions wrote) and a markdown table like seed 002's Table 1.
+std::string convergence_csv(const ConvergenceResult& r, bool comment = false);
 std::string convergence_markdown(const ConvergenceResult& r);
 
 }  // namespace sph

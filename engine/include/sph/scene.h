@@ -30,6 +30,20 @@ struct SceneParam {
 
 using SceneValues = std::map<std::string, double>;
 
+/// What one unit of a scene's numbers is in cgs (the /Units group of HDF5 files and the unit block of
+/// the parameter files export-ics writes). Gas tests are in code units (1, 1, 1): only ratios matter.
+struct UnitSystem {
+  std::string name = "code units";
+  double length_cgs = 1.0;  ///< one length unit [cm]
+  double mass_cgs = 1.0;    ///< one mass unit [g]
+  double time_cgs = 1.0;    ///< one time unit [s]
+  /// SI: m, kg, s (the liquids of seed 001).
+  static UnitSystem si() { return {"SI (m, kg, s)", 100.0, 1000.0, 1.0}; }
+  /// AU, solar mass, Julian year (the N-body scenes of seed 003: G = 4 pi^2); IAU 2012 au, IAU 2015 nominal
+  /// solar mass parameter over G.
+  static UnitSystem astronomical() { return {"AU, Msun, yr", 1.495978707e13, 1.98847e33, 3.15576e7}; }
+};
+
 /// What a scene's build function returns: the particles (with kinds, m, h guess, v and the state the
 /// stages start from set) and the box.
 struct SceneSetup {
@@ -75,6 +89,7 @@ struct SceneSpec {
   /// 0: the scene does not conserve energy (walls doing work, damping, physical viscosity...).
   double energy_bound = 0.0;
   ConvergenceDefaults convergence;  ///< empty key: scene.n over 60 ... 1920 if the scene has n
+  UnitSystem units;                 ///< what the scene's numbers are in (code units unless set)
 
   SceneValues default_values() const;
   /// Restricts a slot to these options.

@@ -10,12 +10,14 @@
 #pragma once
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "sph/config.h"
 #include "sph/density.h"
 #include "sph/diagnostics.h"
+#include "sph/inspect.h"
 #include "sph/run_warning.h"
 #include "sph/snapshot.h"
 
@@ -36,6 +38,19 @@ struct HistorySample {
   double E_kin = 0.0, E_int = 0.0, E_pot = 0.0, E_tot = 0.0;  ///< energies (seed 000 eqs. 3.4.4-3.4.5)
   double P = 0.0;                             ///< |linear momentum| (seed 000 eq. 3.4.1)
   std::vector<double> ref;                    ///< the reference's values (StepperFrame::ref_columns)
+};
+
+/// The second run of an A/B comparison (Stepper::set_compare): the first run's scene and parameters
+/// with `overrides` applied, started with it from t = 0 and stepped to the same times.
+struct CompareFrame {
+  std::vector<std::string> overrides;  ///< key=value pairs run B differs by, e.g. "kernel.type=M6"
+  Snapshot snapshot;
+  Diagnostics diagnostics;
+  std::vector<double> ref_values;      ///< its reference values (the columns are the first run's)
+  std::vector<HistorySample> history;  ///< sampled with the first run's history, at the same times
+  std::vector<RunWarning> warnings;
+  RunConfig config;
+  std::optional<Inspection> inspection;  ///< the inspected id in run B (Stepper::set_inspect)
 };
 
 /// What the engine thread publishes. Everything here describes the same instant of the same World.
@@ -69,6 +84,13 @@ struct StepperFrame {
 
   double record_every = 0.0;       ///< recording interval (0 = not recording) [time units]
   int record_index = -1;           ///< >= 0: this frame lands on recording time t0 + index x every
+
+  bool comparing = false;          ///< `compare` holds run B of an A/B comparison
+  CompareFrame compare;
+  /// World::inspect of the particle asked for (Stepper::set_inspect); while running refreshed at most 4
+  /// times a second and within a tenth of the engine's time (its `step` says which state it explains),
+  /// at every new state otherwise.
+  std::optional<Inspection> inspection;
 };
 
 class Stepper {
@@ -107,6 +129,14 @@ class Stepper {
   /// Records at fixed simulated-time intervals: from now on, steps land on t0 + k x every and each
   /// such frame is published with record_index = k and held until latest() has taken it. 0 = stop.
   void set_record_interval(double every);
+  /// A/B comparison: rebuilds the World from t = 0 with its current params and scene values, beside a
+  /// second one with `overrides` (key=value, as `--set`: "kernel.type=M6", "visc.alpha=0",
+  /// "scene.n_left=800") applied; both are stepped to the same times and posted params reach both (B
+  /// keeps its overrides). An override the scene refuses leaves everything as it was and reports the
+  /// error. Empty: the comparison stops (the first World runs on).
+  void set_compare(const std::vector<std::string>& overrides);
+  /// Frames carry World::inspect(id) (and run B's, when comparing); id < 0: none.
+  void set_inspect(std::int64_t id);
 
   // --- channel 3: snapshots --------------------------------------------------------------------------
   /// The newest published frame, or nullptr before the first. The frame stays valid and unchanged until

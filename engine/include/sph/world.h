@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "sph/config.h"
 #include "sph/density.h"
 #include "sph/diagnostics.h"
+#include "sph/inspect.h"
 #include "sph/integrator.h"
 #include "sph/kernel.h"
 #include "sph/neighbours.h"
@@ -85,6 +87,7 @@ class World {
   const Kernel& kernel() const { return kernel_; }
   double eta() const;  ///< effective eta (the kernel's default if kernel.eta == 0)
   double spacing() const { return spacing_; }  ///< the scene's initial particle spacing
+  double wall_strength() const { return wall_strength_; }  ///< the scene's Lennard-Jones D (walls.D = 0)
   const DensityStats& density_stats() const;
   std::size_t correction_fallbacks() const;  ///< particles whose gradient correction fell back (last evaluation)
   std::int64_t evaluations() const { return evaluations_; }
@@ -115,6 +118,10 @@ class World {
   /// The Barnes-Hut cells the walk of particle k (a snapshot index) takes now, at the current theta and
   /// guard (the tree overlay); empty when the scene's gravity is not the tree or k is out of range.
   std::vector<TreeCell> tree_cells(std::size_t k) const;
+  /// Particle `id` taken apart (sph/inspect.h): its fields, neighbours and the terms of its equations,
+  /// re-evaluated at the current state on a copy of the particles (the run itself is not changed; costs
+  /// one evaluation). nullopt if there is no such particle.
+  std::optional<Inspection> inspect(std::int64_t id) const;
 
   /// What the run has tolerated so far (empty for a clean run), in the order first found.
   const std::vector<RunWarning>& warnings() const { return warnings_; }

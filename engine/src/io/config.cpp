@@ -6,7 +6,9 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "sph/hdf5_ic.h"
 #include "sph/param_table.h"
+#include "sph/suggest.h"
 
 namespace sph {
 
@@ -14,8 +16,12 @@ RunConfig RunConfig::from_scene(const std::string& name) {
   const SceneSpec* s = find_scene(name);
   if (!s) {
     std::string known;
-    for (const auto& sc : scene_registry()) known += " " + sc.name;
-    throw ConfigError("unknown scene '" + name + "' (built-in scenes:" + known + ")");
+    std::vector<std::string> names;
+    for (const auto& sc : scene_registry()) {
+      known += " " + sc.name;
+      names.push_back(sc.name);
+    }
+    throw ConfigError("unknown scene '" + name + "'" + did_you_mean(name, names) + " (built-in scenes:" + known + ")");
   }
   RunConfig c;
   c.scene = s;
@@ -27,20 +33,29 @@ RunConfig RunConfig::from_scene(const std::string& name) {
 RunConfig RunConfig::from_file(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw ConfigError(path + ": cannot open scene file");
+  std::stringstream text;
+  text << in.rdbuf();
+  return from_json_text(text.str(), path);
+}
+
+RunConfig RunConfig::from_json_text(const std::string& text, const std::string& path) {
   nlohmann::json j;
   try {
-    j = nlohmann::json::parse(in);
+    j = nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
     throw ConfigError(path + ": malformed JSON: " + e.what());
   }
   if (!j.is_object()) throw ConfigError(path + ": the top level must be an object");
   for (const auto& [key, _] : j.items())
     if (key != "scene" && key != "params" && key != "description")
-      throw ConfigError(path + ": unknown key '" + key + "' (expected scene, params, description)");
-  if (!j.contains("scene") || !j["scene"].is_string()) throw ConfigError(path + ": key 'scene' must name a built-in scene");
+      throw ConfigError(path + ": unknown key '" + key + "' (expected scene, params, description)" +
+                        did_you_mean(key, {"scene", "params", "description"}));
+  if (!j.contains("scene") || !j["scene"].is_string())
+    throw ConfigError(path + ": key 'scene' must name a built-in scene or an HDF5 initial condition");
   RunConfig c;
   try {
-    c = from_scene(j["scene"].get<std::string>());
+    const std::string scene = j["scene"].get<std::string>();
+    c = is_hdf5_path(scene) ? load_hdf5_ic(scene) : from_scene(scene);
   } catch (const ConfigError& e) {
     throw ConfigError(path + ": key 'scene': " + e.what());
   }
@@ -62,6 +77,7 @@ RunConfig RunConfig::from_file(const std::string& path) {
 }
 
 RunConfig RunConfig::load(const std::string& name_or_file) {
+  if (is_hdf5_path(name_or_file)) return load_hdf5_ic(name_or_file);
   const bool looks_like_file = name_or_file.ends_with(".json") || name_or_file.find('/') != std::string::npos;
   if (looks_like_file || (!find_scene(name_or_file) && std::filesystem::exists(name_or_file)))
     return from_file(name_or_file);
@@ -84,14 +100,21 @@ void RunConfig::set(const std::string& key, const std::string& value, const std:
       return;
     }
     std::string known;
-    for (const auto& sp : scene->params) known += " scene." + sp.name;
-    throw ConfigError(origin + ": unknown key '" + key + "' for scene " + scene->name + " (its keys:" + known + ")");
+    std::vector<std::string> keys;
+    for (const auto& sp : scene->params) {
+      known += " scene." + sp.name;
+      keys.push_back("scene." + sp.name);
+    }
+    throw ConfigError(origin + ": unknown key '" + key + "' for scene " + scene->name + did_you_mean(key, keys) +
+                      (known.empty() ? std::string(" (it has no scene.* keys)") : " (its keys:" + known + ")"));
   }
   const ParamInfo* info = find_param(key);
   if (!info) {
-    std::string known;
-    for (const auto& p : param_table()) known += " " + std::string(p.key);
-    throw ConfigError(origin + ": unknown key '" + key + "' (run parameters:" + known + "; scene keys: scene.NAME)");
+    std::vector<std::string> keys;
+    for (const auto& p : param_table()) keys.emplace_back(p.key);
+    for (const auto& sp : scene->params) keys.push_back("scene." + sp.name);
+    throw ConfigError(origin + ": unknown key '" + key + "'" + did_you_mean(key, keys) +
+                      " (`sph params` lists every run parameter, `sph help " + scene->name + "` the scene's keys)");
   }
   std::string err;
   if (!info->set(params, value, err)) throw ConfigError(origin + ": key '" + key + "': " + err);
@@ -140,7 +163,7 @@ void RunConfig::validate() const {
 
 std::string RunConfig::to_json() const {
   nlohmann::ordered_json j;
-  j["scene"] = scene->name;
+  j["scene"] = source_file.empty() ? scene->name : source_file;
   nlohmann::ordered_json p = nlohmann::ordered_json::object();
   for (const auto& info : param_table()) {
     if (!info.is_active(params)) continue;

@@ -141,6 +141,13 @@ void EngineLoop::apply(const Command& c) {
     case K::SetTreeProbe:
       tree_probe_ = std::isfinite(c.value) && c.value >= 0.0 ? static_cast<std::int64_t>(c.value) : -1;
       break;
+    case K::SetCompare:
+      start_compare(c.names);
+      break;
+    case K::SetInspect:
+      inspect_.set_id(std::isfinite(c.value) && c.value >= 0.0 ? static_cast<std::int64_t>(c.value) : -1);
+      inspect_b_.set_id(inspect_.id());
+      break;
   }
 }
 
@@ -149,6 +156,7 @@ void EngineLoop::adopt(const InboxBatch& b) {
   try {
     if (world_) world_->set_params(b.params);
     else cfg_.params = b.params;
+    if (world_) compare_.follow(world_->params(), &error_);
   } catch (const std::exception& e) {  // a physics the scene cannot run: keep the old params, say why
     error_ = e.what();
   }
@@ -164,11 +172,12 @@ void EngineLoop::rebuild(const RunConfig& cfg) {
     cfg_ = world_->config();
     ++world_serial_;
     history_.clear();
+    error_.clear();
+    if (compare_.on() && !compare_.restart(cfg_, &error_)) error_ += " (the comparison stopped)";
     sample_history();
     if (at_end_) running_ = true;  // the run had only stopped at t_end: run the new World
     diverged_ = at_end_ = false;
     diverged_particle_ = diverged_step_ = -1;
-    error_.clear();
     meter_.zero();
     anchor_pacing();
     if (record_every_ > 0.0) start_recording(record_every_);  // the new World's frames start at its t
@@ -202,6 +211,7 @@ void EngineLoop::step() {
     error_ = std::string("step failed: ") + e.what();
     diverged_ = true;
   }
+  if (!diverged_ && !compare_.advance_to(world_->time(), &error_)) diverged_ = true;  // run B to the same time
   if (diverged_) {
     running_ = false;
     single_steps_ = 0;
@@ -235,6 +245,28 @@ void EngineLoop::step() {
   }
 }
 
+void EngineLoop::start_compare(const std::vector<std::string>& overrides) {
+  if (overrides.empty()) {
+    compare_.stop();
+    return;
+  }
+  if (!world_) {
+    error_ = "compare: no scene is loaded";
+    return;
+  }
+  RunConfig a = cfg_;
+  a.params = world_->params();
+  try {
+    (void)fork_config(a, overrides);  // refused before anything changes
+  } catch (const std::exception& e) {
+    error_ = std::string("compare: ") + e.what();
+    return;
+  }
+  compare_.stop();
+  rebuild(a);  // A restarts from t = 0 ...
+  if (world_ && compare_.start(world_->config(), overrides, &error_)) compare_.sample();  // ... and B beside it
+}
+
 void EngineLoop::start_recording(double every) {
   record_every_ = (every > 0.0 && std::isfinite(every)) ? every : 0.0;
   if (record_every_ > 0.0 && world_) {
@@ -245,16 +277,8 @@ void EngineLoop::start_recording(double every) {
 }
 
 void EngineLoop::sample_history() {
-  const Diagnostics d = world_->diagnostics();
-  HistorySample s;
-  s.t = d.t;
-  s.E_kin = d.E_kin;
-  s.E_int = d.E_int;
-  s.E_pot = d.E_pot;
-  s.E_tot = d.E_tot;
-  s.P = std::sqrt(d.P[0] * d.P[0] + d.P[1] * d.P[1] + d.P[2] * d.P[2]);
-  s.ref = world_->reference_values();
-  history_.add(s);
+  history_.add(history_sample(*world_));
+  compare_.sample();  // at the same time: both histories decimate alike
 }
 
 void EngineLoop::anchor_pacing() {
@@ -308,6 +332,15 @@ void EngineLoop::publish(int record_index) {
   f.error = error_;
   f.record_every = record_every_;
   f.record_index = record_index;
+  const bool run = stepping() && running_;
+  f.inspection = inspect_.refresh(world_.get(), world_serial_, adopted_, run);
+  f.comparing = compare_.on();
+  if (f.comparing) {
+    compare_.fill(f.compare);
+    f.compare.inspection = inspect_b_.refresh(compare_.world(), world_serial_, adopted_, run);
+  } else {
+    f.compare = CompareFrame{};
+  }
   out_.publish();
   published_.store(serial_, std::memory_order_release);
   last_publish_ = Clock::now();

@@ -7,8 +7,10 @@
 #include <cstdint>
 #include <memory>
 
+#include "compare_run.h"
 #include "history.h"
 #include "inbox.h"
+#include "inspect_cache.h"
 #include "rate_meter.h"
 #include "sph/stepper.h"
 #include "sph/world.h"
@@ -33,6 +35,7 @@ class EngineLoop {
   void rebuild(const RunConfig& cfg);    // new World; keeps the old one if the build throws
   void step();                           // one World::step with its bookkeeping
   void start_recording(double every);
+  void start_compare(const std::vector<std::string>& overrides);  // A and B from t = 0; empty: stop
   void sample_history();
   void publish(int record_index = -1);
   bool stepping() const { return world_ && !diverged_ && (running_ || single_steps_ > 0); }
@@ -61,6 +64,8 @@ class EngineLoop {
   int emit_record_ = -1;               // recording index to publish after the current commands
   History history_;
   RateMeter meter_;
+  CompareRun compare_;                 // run B of an A/B comparison (off unless asked for)
+  InspectCache inspect_, inspect_b_;   // the inspected particle in run A and in run B
 };
 
 }  // namespace sph::detail

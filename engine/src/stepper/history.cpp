@@ -1,6 +1,21 @@
 #include "history.h"
 
+#include <cmath>
+
 namespace sph::detail {
+
+HistorySample history_sample(const World& w) {
+  const Diagnostics d = w.diagnostics();
+  HistorySample s;
+  s.t = d.t;
+  s.E_kin = d.E_kin;
+  s.E_int = d.E_int;
+  s.E_pot = d.E_pot;
+  s.E_tot = d.E_tot;
+  s.P = std::sqrt(d.P[0] * d.P[0] + d.P[1] * d.P[1] + d.P[2] * d.P[2]);
+  s.ref = w.reference_values();
+  return s;
+}
 
 void History::clear() {
   samples_.clear();

@@ -7,8 +7,12 @@
 #include <vector>
 
 #include "sph/stepper.h"
+#include "sph/world.h"
 
 namespace sph::detail {
+
+/// The world's diagnostics now, as one history point.
+HistorySample history_sample(const World& w);
 
 class History {
  public:

@@ -25,11 +25,14 @@ struct Command {
     SetStopAtEnd,      ///< `flag`
     SetRecordInterval, ///< `value` [time units], 0 = stop recording
     SetTreeProbe,      ///< `value`: the particle (snapshot index) whose tree walk frames carry; < 0 = none
+    SetCompare,        ///< `names`: run B's overrides (key=value); empty = stop comparing
+    SetInspect,        ///< `value`: the particle id frames inspect; < 0 = none
   };
   Kind kind = Kind::Pause;
   RunConfig config;                 ///< Reset (params only) and Load
   std::uint64_t params_version = 0; ///< Reset, Load: mailbox version of the params they carry
   std::string name;
+  std::vector<std::string> names;
   double value = 0.0;
   bool flag = false;
 };

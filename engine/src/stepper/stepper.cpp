@@ -80,6 +80,12 @@ void Stepper::set_tree_probe(std::int64_t k) {
 void Stepper::set_record_interval(double every) {
   impl_->inbox.push(make(Command::Kind::SetRecordInterval, every));
 }
+void Stepper::set_compare(const std::vector<std::string>& overrides) {
+  Command c = make(Command::Kind::SetCompare);
+  c.names = overrides;
+  impl_->inbox.push(std::move(c));
+}
+void Stepper::set_inspect(std::int64_t id) { impl_->inbox.push(make(Command::Kind::SetInspect, static_cast<double>(id))); }
 
 const StepperFrame* Stepper::latest() {
   if (impl_->frames.acquire()) impl_->have_front = true;

@@ -97,10 +97,11 @@ ConvergenceResult run_convergence(const RunConfig& base, const ConvergenceStudy&
   return r;
 }
 
-std::string convergence_csv(const ConvergenceResult& r) {
-  std::string s = "# " + r.scene + ": " + r.column + " (" + r.column_description + ") at t = " + text(r.t) +
-                  " against " + r.key + "; h = initial spacing, order = log(e1/e2)/log(h1/h2); fitted slope " +
-                  text(r.slope) + "\n";
+std::string convergence_csv(const ConvergenceResult& r, bool comment) {
+  std::string s;
+  if (comment)
+    s = "# " + r.scene + ": " + r.column + " (" + r.column_description + ") at t = " + text(r.t) + " against " + r.key +
+        "; h = initial spacing, order = log(e1/e2)/log(h1/h2); fitted slope " + text(r.slope) + "\n";
   s += "value,h,error,order,wall_s,steps\n";
   for (const ConvergenceRun& run : r.runs)
     s += text(run.value) + "," + text(run.h) + "," + text(run.error) + "," +

@@ -2,7 +2,10 @@
 //   gui_image_check screenshot FILE   - the whole-window screenshot shows the panels (text and widgets on
 //                                       the left and below) and the particle view (coloured particles and
 //                                       the exact curve, drawn in the colour map's contrast colour);
-//   gui_image_check compare A B       - two renderings of the same frame match within a small tolerance.
+//   gui_image_check compare A B       - two renderings of the same frame match within a small tolerance;
+//   gui_image_check ab FILE           - an A/B comparison with the inspector open: the view (top middle)
+//                                       shows dots in both run colours, the inspector column (top right)
+//                                       text and a table.
 // Prints what it measured; exit code 0 if the checks pass.
 #include <algorithm>
 #include <cmath>
@@ -15,6 +18,7 @@
 #include <stb/stb_image.h>
 
 #include "colormap.h"
+#include "frame_scene.h"
 
 namespace {
 
@@ -93,12 +97,32 @@ int compare(const char* a_path, const char* b_path) {
   return mean <= 1.0 && frac <= 0.002 ? 0 : 1;
 }
 
+int ab_screenshot(const char* path) {
+  const Image im(path);
+  if (!im.px) return 1;
+  std::printf("%s: %d x %d\n", path, im.w, im.h);
+  auto near_colour = [](sph::render::Rgba c) {
+    const int r = static_cast<int>(std::lround(255 * c.r)), g = static_cast<int>(std::lround(255 * c.g)),
+              b = static_cast<int>(std::lround(255 * c.b));
+    return [=](const unsigned char* p) { return std::abs(p[0] - r) < 30 && std::abs(p[1] - g) < 30 && std::abs(p[2] - b) < 30; };
+  };
+  auto lit = [](const unsigned char* p) { return p[0] + p[1] + p[2] > 3 * 70; };
+  bool ok = true;
+  // the layout: controls to 26% of the width, the view to the inspector column, both above 63% of the height
+  ok &= check("view: run A's dots (orange)", fraction(im, 0.27, 0.69, 0.02, 0.58, near_colour(sph::render::kRunColors[0])), 0.002);
+  ok &= check("view: run B's dots (sky blue)", fraction(im, 0.27, 0.69, 0.02, 0.58, near_colour(sph::render::kRunColors[1])), 0.002);
+  ok &= check("inspector column (top right): text and table", fraction(im, 0.71, 0.99, 0.02, 0.58, lit), 0.03);
+  ok &= check("diagnostics: both runs' curves (orange)", fraction(im, 0.40, 0.67, 0.64, 0.95, near_colour(sph::render::kRunColors[0])), 0.001);
+  return ok ? 0 : 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   const std::string mode = argc > 1 ? argv[1] : "";
   if (mode == "screenshot" && argc == 3) return screenshot(argv[2]);
   if (mode == "compare" && argc == 4) return compare(argv[2], argv[3]);
-  std::fprintf(stderr, "usage: gui_image_check screenshot FILE | compare A B\n");
+  if (mode == "ab" && argc == 3) return ab_screenshot(argv[2]);
+  std::fprintf(stderr, "usage: gui_image_check screenshot FILE | compare A B | ab FILE\n");
   return 2;
 }

@@ -3,7 +3,11 @@
 #   keys:  quick key taps through the key callback (--tap-keys) are all taken;
 #   end:   Space at t_end replays and stops at t_end again;
 #   match: the GUI records the t = 0 frame of sod, the headless program renders the same frame, and the
-#          two PNGs are compared.
+#          two PNGs are compared;
+#   ab:    an A/B comparison on sod (alpha = 1 against alpha = 0) at t = 0.15 with the inspector open on
+#          particle 410: the screenshot shows both runs and the inspector, the legend both L1 values,
+#          and the inspector's numbers are the engine's (INSPECT_CHECK);
+#   click: a click on a particle's dot opens the inspector on it.
 file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT})
 
@@ -41,6 +45,29 @@ elseif(MODE STREQUAL "end")
   message("${out}${err}")
   if(NOT rc EQUAL 0 OR NOT out MATCHES "last state: step [0-9]+, t = 0.01\n")
     message(FATAL_ERROR "expected Space at t_end to replay and stop at t_end = 0.01")
+  endif()
+elseif(MODE STREQUAL "ab")
+  execute_process(COMMAND ${XVFB_RUN} -a -s "-screen 0 1600x900x24" ${GUI} --scene sod --set time.t_end=0.15
+                  --compare-set visc.alpha=0 --compare-set visc.beta=0 --inspect 410 --quit-at-end
+                  --quit-after-frames 3000 --screenshot ${OUT}/ab.png
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err WORKING_DIRECTORY ${OUT})
+  message("${out}${err}")
+  file(WRITE ${OUT}/report.txt "${out}")
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "last state: step [0-9]+, t = 0.15\n")
+    message(FATAL_ERROR "expected the run to stop at t_end = 0.15")
+  endif()
+  if(NOT out MATCHES "view legend: exact \\| A: visc.alpha=1, visc.beta=2 +L1_rho = [0-9.e-]+ \\| B: visc.alpha=0, visc.beta=0 +L1_rho = [0-9.e-]+")
+    message(FATAL_ERROR "expected both runs with their L1 in the view's legend")
+  endif()
+  run(${CHECK} ab ${OUT}/ab.png)
+  run(${INSPECT_CHECK} ${OUT}/report.txt sod 0.15)
+elseif(MODE STREQUAL "click")
+  # a click on particle 300's dot (through the view's picking) opens the inspector on it
+  execute_process(COMMAND ${XVFB_RUN} -a ${GUI} --scene sod --paused --click-particle 20:300 --quit-after-frames 80
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err WORKING_DIRECTORY ${OUT})
+  message("${out}${err}")
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "inspected particle 300 at step 0")
+    message(FATAL_ERROR "expected a click on particle 300 to open the inspector on it")
   endif()
 elseif(MODE STREQUAL "match")
   run(${XVFB_RUN} -a ${GUI} --scene sod --paused --record ${OUT}/gui --record-size 1280x720 --quit-after-frames 60)

@@ -1,0 +1,23 @@
+// A/B comparisons: run B is run A's configuration with some parameters changed ("overrides", key=value
+// as `--set` takes them: "kernel.type=M6", "visc.alpha=0", "scene.n_left=800"). Shared by the GUI's
+// stepper and `sph run --compare`.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "sph/config.h"
+
+namespace sph {
+
+/// A's config with the overrides applied, validated; throws ConfigError naming the override.
+RunConfig fork_config(const RunConfig& a, const std::vector<std::string>& overrides);
+
+/// "kernel.type=M6, visc.alpha=0": the overridden keys with their values in `cfg` (A's values for run
+/// A's label, B's for run B's); a key cfg does not know is left out.
+std::string compare_label(const RunConfig& cfg, const std::vector<std::string>& overrides);
+
+/// The keys in which b differs from a: every run parameter of the param table (physics slots included)
+/// and every scene value, as key=value with b's values, in table order.
+std::vector<std::string> differences(const RunConfig& a, const RunConfig& b);
+
+}  // namespace sph

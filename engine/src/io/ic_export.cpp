@@ -1,0 +1,287 @@
+// Kernel mapping and the parameter files of SWIFT (YAML) and GADGET-4 (param.txt + Config.sh options).
+#include "sph/ic_export.h"
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "io/export_box.h"
+#include "sph/kernel.h"
+
+namespace sph {
+namespace {
+
+std::string num(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  return buf;
+}
+
+/// SWIFT's H/h per kernel and dimension (Dehnen & Aly 2012, MNRAS 425, 1068, Table 1; SWIFT's
+/// src/kernel_hydro.h uses the same numbers). 0 where SWIFT has no such kernel (Wendland in 1D).
+double swift_ratio(const std::string& kernel, int dim) {
+  struct Row {
+    const char* name;
+    double r1, r2, r3;
+  };
+  static const Row rows[] = {{"cubic-spline", 1.732051, 1.778002, 1.825742},
+                             {"quartic-spline", 1.936492, 1.977173, 2.018932},
+                             {"quintic-spline", 2.121321, 2.158131, 2.195775},
+                             {"wendland-C2", 0.0, 1.897367, 1.936492},
+                             {"wendland-C4", 0.0, 2.171239, 2.207940}};
+  for (const Row& r : rows)
+    if (kernel == r.name) return dim == 1 ? r.r1 : dim == 2 ? r.r2 : r.r3;
+  return 0.0;
+}
+
+double ball_volume(int dim) { return dim == 1 ? 2.0 : dim == 2 ? std::numbers::pi : 4.0 * std::numbers::pi / 3.0; }
+
+/// The stage choices a target code cannot reproduce, as warnings.
+void physics_warnings(const World& world, IcFormat f, std::vector<std::string>* w) {
+  const Physics& ph = world.params().physics;
+  const std::string code = f == IcFormat::Swift ? "SWIFT" : "GADGET-4";
+  if (ph.eos == EosType::Tait || ph.eos == EosType::Polytropic)
+    w->push_back("physics.eos = " + ph.get(Slot::Eos) + ": " + code + " runs ideal or isothermal gases only");
+  if (ph.force == ForceType::Corrected || ph.force == ForceType::StandardCorrected)
+    w->push_back("physics.force = " + ph.get(Slot::Force) + ": " + code + " has no corrected-gradient SPH");
+  if (ph.density == DensityMode::Continuity)
+    w->push_back("physics.density = continuity: " + code + " sums the density");
+  if (ph.walls != WallType::None)
+    w->push_back("physics.walls = " + ph.get(Slot::Walls) + ": " + code +
+                 " has no fixed wall particles (they are written as gas, with this code's own Kind dataset)");
+  if (ph.body_force != BodyForce::None)
+    w->push_back("physics.body_force = " + ph.get(Slot::BodyForce) + ": not written to the parameter file (" + code +
+                 " needs an external-potential module for it)");
+  if (ph.xsph == Toggle::On) w->push_back("physics.xsph = on: " + code + " has no XSPH");
+  if (ph.viscosity == ViscType::Laplacian)
+    w->push_back("physics.viscosity = laplacian: " + code + " has artificial viscosity only");
+  for (int axis : export_box(world).wall_axes)
+    w->push_back(std::string("mirror walls on axis ") + "xyz"[axis] + ": " + code +
+                 " has none, so its box is periodic there (the states meet again at the box's edge, as in SWIFT's "
+                 "own Sod example): compare only until waves reach it");
+}
+
+/// What both parameter files start from: the scene's parameters, units, kernel and its mapping, box.
+struct Target {
+  Target(const World& world, IcFormat f, std::vector<std::string>* w)
+      : prm(world.params()), u(world.scene().units), dim(world.particles().dim()), nbody(is_nbody(prm)),
+        kernel(prm.kernel.type, dim), km(kernel_mapping(prm.kernel.type, dim, f)), box(export_box(world)) {
+    if (!nbody && !km.exact) w->push_back("kernel.type = " + std::string(to_string(prm.kernel.type)) + ": " + km.note);
+  }
+  double eta() const { return prm.kernel.eta > 0.0 ? prm.kernel.eta : kernel.default_eta(); }
+  const Params& prm;
+  const UnitSystem& u;
+  int dim;
+  bool nbody;
+  Kernel kernel;
+  KernelMapping km;
+  ExportBox box;
+};
+
+std::string swift_file(const World& world, const std::string& ic_file, std::vector<std::string>* w) {
+  const Target t(world, IcFormat::Swift, w);
+  const Params& prm = t.prm;
+  const UnitSystem& u = t.u;
+  const int dim = t.dim;
+  const bool nbody = t.nbody;
+  const KernelMapping& km = t.km;
+  std::string configure = "./configure --with-hydro-dimension=" + std::to_string(dim);
+  if (!nbody) {
+    configure += " --with-kernel=" + km.name + " --with-hydro=minimal";
+    const double g = prm.gas.gamma;
+    const char* index = std::abs(g - 5.0 / 3.0) < 1e-9 ? "5/3"
+                        : std::abs(g - 1.4) < 1e-9     ? "7/5"
+                        : std::abs(g - 4.0 / 3.0) < 1e-9 ? "4/3"
+                        : std::abs(g - 2.0) < 1e-9     ? "2"
+                                                       : nullptr;
+    if (prm.physics.eos == EosType::Isothermal) configure += " --with-equation-of-state=isothermal-gas";
+    else if (index) configure += std::string(" --with-adiabatic-index=") + index;
+    else w->push_back("gas.gamma = " + num(g) + ": SWIFT compiles only 5/3, 7/5, 4/3 or 2 (--with-adiabatic-index)");
+  }
+  const double dt_out = prm.time.dt_out > 0.0 ? prm.time.dt_out : prm.time.t_end;
+  std::string s = "# SWIFT parameter file for " + ic_file + ", written by `sph export-ics " + world.scene().name +
+                  " --format swift`.\n# Build SWIFT with:\n#   " + configure + "\n# Run: swift " +
+                  (nbody ? "--self-gravity" : std::string("--hydro") +
+                                                  (prm.physics.gravity != GravityType::None ? " --self-gravity" : "")) +
+                  " --threads=2 PARAMETER_FILE\n# Scene units: " + u.name + ".\n\n";
+  s += "InternalUnitSystem:\n  UnitMass_in_cgs:     " + num(u.mass_cgs) + "\n  UnitLength_in_cgs:   " +
+       num(u.length_cgs) + "\n  UnitVelocity_in_cgs: " + num(u.length_cgs / u.time_cgs) +
+       "\n  UnitCurrent_in_cgs:  1\n  UnitTemp_in_cgs:     1\n\n";
+  s += "TimeIntegration:\n  time_begin: " + num(world.time()) + "\n  time_end:   " + num(prm.time.t_end) +
+       "\n  dt_min:     " + num(prm.time.t_end * 1e-10) + "\n  dt_max:     " + num(dt_out) + "\n\n";
+  s += "Snapshots:\n  basename:   " + world.scene().name + "\n  time_first: " + num(world.time()) +
+       "\n  delta_time: " + num(dt_out) + "\n\nStatistics:\n  delta_time: " + num(dt_out / 10.0) + "\n\n";
+  if (!nbody) {
+    // the same support radius in units of the particle spacing: H = support eta dx = gamma_K eta_swift dx
+    s += "SPH:\n  resolution_eta:  " + num(t.kernel.support() * t.eta() / km.ratio) + "   # this code's kernel.eta = " +
+         num(t.eta()) + ", support " + num(t.kernel.support()) + " h\n  CFL_condition:   " + num(prm.time.cfl) +
+         "\n  h_relative_tolerance: " + num(prm.h.tol) + "\n";
+    if (prm.physics.viscosity == ViscType::Monaghan)
+      s += "  viscosity_alpha: " + num(prm.visc.alpha) + "   # beta = 2 alpha in SWIFT; this code's visc.beta = " +
+           num(prm.visc.beta) + "\n";
+    if (prm.physics.eos == EosType::Isothermal)
+      s += "\nEoS:\n  isothermal_internal_energy: " + num(prm.gas.cs * prm.gas.cs / (prm.gas.gamma - 1.0)) + "\n";
+    s += "\n";
+  }
+  if (prm.physics.gravity != GravityType::None) {
+    const double eps = prm.gravity.eps > 0.0 ? prm.gravity.eps : world.spacing() * 0.1;
+    s += "Gravity:\n  eta:      0.025\n  MAC:      geometric\n  theta_cr: " + num(prm.gravity.theta) +
+         "\n  max_physical_DM_softening:     " + num(eps) + "\n  max_physical_baryon_softening: " + num(eps) +
+         "\n  comoving_DM_softening:         " + num(eps) + "\n  comoving_baryon_softening:     " + num(eps) +
+         "\n\nPhysicalConstants:\n  G: " + num(prm.gravity.G) + "\n\n";
+  }
+  s += "InitialConditions:\n  file_name: ./" + ic_file + "\n  periodic:  " + std::string(t.box.periodic ? "1" : "0") +
+       "\n";
+  return s;
+}
+
+std::string gadget4_file(const World& world, const std::string& ic_file, std::vector<std::string>* w) {
+  const Target t(world, IcFormat::Gadget4, w);
+  const Params& prm = t.prm;
+  const UnitSystem& u = t.u;
+  const int dim = t.dim;
+  const bool nbody = t.nbody;
+  const KernelMapping& km = t.km;
+  const ExportBox& box = t.box;
+  if (box.periodic) {
+    bool cube = true;
+    for (int k = 1; k < dim; ++k) cube = cube && std::abs(box.size[k] - box.size[0]) <= 1e-12 * box.size[0];
+    if (!cube) w->push_back("the box is not a cube: GADGET-4's periodic box is a cube of side BoxSize (its LONG_X_BITS options "
+                            "shorten a side by powers of 2); the largest side is written");
+  }
+  std::string config = box.periodic ? "PERIODIC\n" : "";
+  if (dim == 2) config += "TWODIMS\n";
+  if (dim == 1) config += "ONEDIMS\n";
+  if (prm.physics.gravity != GravityType::None || nbody) config += "SELFGRAVITY\n";
+  if (!nbody) {
+    config += km.name + "\n";
+    if (prm.physics.eos == EosType::Isothermal) config += "ISOTHERM_EQS\n";
+    else config += "GAMMA=" + num(prm.gas.gamma) + "\n";
+  }
+  config += "DOUBLEPRECISION=1\nIDS_64BIT\n";
+  std::string s = "% GADGET-4 parameter file for " + ic_file + ", written by `sph export-ics " + world.scene().name +
+                  " --format gadget4`.\n% Compile GADGET-4 with these Config.sh options:\n";
+  for (std::size_t a = 0, b; a < config.size(); a = b + 1) {
+    b = config.find('\n', a);
+    s += "%   " + config.substr(a, b - a) + "\n";
+  }
+  s += "% Scene units: " + u.name + ".\n\n";
+  const double dt_out = prm.time.dt_out > 0.0 ? prm.time.dt_out : prm.time.t_end;
+  double side = 0.0;
+  if (box.periodic)
+    for (int k = 0; k < dim; ++k) side = std::max(side, box.size[k]);
+  auto line = [&](const std::string& key, const std::string& value) {
+    std::string k = key;
+    k.resize(std::max<std::size_t>(k.size() + 1, 34), ' ');
+    s += k + value + "\n";
+  };
+  line("InitCondFile", ic_file.substr(0, ic_file.rfind(".hdf5")));
+  line("OutputDir", "./output");
+  line("SnapshotFileBase", "snapshot");
+  line("OutputListFilename", "empty.txt");
+  line("ICFormat", "3");
+  line("SnapFormat", "3");
+  line("TimeLimitCPU", "86400");
+  line("CpuTimeBetRestartFile", "7200");
+  line("MaxMemSize", "2000");
+  line("TimeBegin", num(world.time()));
+  line("TimeMax", num(prm.time.t_end));
+  line("ComovingIntegrationOn", "0");
+  line("Omega0", "0");
+  line("OmegaLambda", "0");
+  line("OmegaBaryon", "0");
+  line("HubbleParam", "1.0");
+  line("Hubble", "0");
+  line("BoxSize", num(side));
+  line("OutputListOn", "0");
+  line("TimeBetSnapshot", num(dt_out));
+  line("TimeOfFirstSnapshot", num(world.time()));
+  line("TimeBetStatistics", num(dt_out / 10.0));
+  line("NumFilesPerSnapshot", "1");
+  line("MaxFilesWithConcurrentIO", "1");
+  line("ErrTolIntAccuracy", "0.025");
+  line("CourantFac", num(prm.time.cfl));
+  line("MaxSizeTimestep", num(dt_out));
+  line("MinSizeTimestep", "0");
+  line("TypeOfOpeningCriterion", "1");
+  line("ErrTolTheta", num(prm.gravity.theta));
+  line("ErrTolThetaMax", "0.9");
+  line("ErrTolForceAcc", "0.005");
+  line("TopNodeFactor", "2.5");
+  line("ActivePartFracForNewDomainDecomp", "0.01");
+  // neighbours inside the support radius H = support eta dx on a lattice: V_d (support eta)^d
+  line("DesNumNgb", num(std::round(ball_volume(dim) * std::pow(t.kernel.support() * t.eta(), dim))));
+  line("MaxNumNgbDeviation", dim == 1 ? "0.1" : "1");
+  line("UnitLength_in_cm", num(u.length_cgs));
+  line("UnitMass_in_g", num(u.mass_cgs));
+  line("UnitVelocity_in_cm_per_s", num(u.length_cgs / u.time_cgs));
+  line("GravityConstantInternal", num(prm.gravity.G));
+  const double eps = prm.gravity.eps > 0.0 ? prm.gravity.eps : std::max(world.spacing() * 0.1, 1e-6);
+  line("SofteningComovingClass0", num(eps));
+  line("SofteningMaxPhysClass0", num(eps));
+  for (int t = 0; t < 6; ++t) line("SofteningClassOfPartType" + std::to_string(t), "0");
+  line("ArtBulkViscConst", num(prm.physics.viscosity == ViscType::Monaghan ? prm.visc.alpha : 0.0));
+  line("MinEgySpec", "0");
+  line("InitGasTemp", "0");
+  return s;
+}
+
+}  // namespace
+
+const char* to_string(IcFormat f) { return f == IcFormat::Swift ? "swift" : "gadget4"; }
+
+bool parse(const std::string& s, IcFormat& out) {
+  if (s == "swift") out = IcFormat::Swift;
+  else if (s == "gadget4") out = IcFormat::Gadget4;
+  else return false;
+  return true;
+}
+
+KernelMapping kernel_mapping(KernelType k, int dim, IcFormat f) {
+  KernelMapping m;
+  if (f == IcFormat::Swift) {
+    switch (k) {
+      case KernelType::M4: m.name = "cubic-spline"; break;
+      case KernelType::M5: m.name = "quartic-spline"; break;
+      case KernelType::M6: m.name = "quintic-spline"; break;
+      case KernelType::WendlandC2: m.name = "wendland-C2"; break;
+      case KernelType::WendlandC4: m.name = "wendland-C4"; break;
+      case KernelType::Gaussian:
+        m = {"quintic-spline", false, 0.0, "SWIFT has no Gaussian; the quintic spline (M6, same support 3h) is used"};
+        break;
+    }
+    if (dim == 1 && (k == KernelType::WendlandC2 || k == KernelType::WendlandC4))
+      m = {"quintic-spline", false, 0.0, "SWIFT has no Wendland kernel in 1D; the quintic spline (M6) is used"};
+    m.ratio = swift_ratio(m.name, dim);
+    return m;
+  }
+  switch (k) {
+    case KernelType::M4: m.name = "CUBIC_SPLINE_KERNEL"; break;
+    case KernelType::WendlandC2: m.name = "WENDLAND_C2_KERNEL"; break;
+    case KernelType::WendlandC4: m.name = "WENDLAND_C4_KERNEL"; break;
+    case KernelType::M5:
+    case KernelType::M6:
+    case KernelType::Gaussian:
+      m = {"WENDLAND_C4_KERNEL", false, 0.0,
+           std::string("GADGET-4 has no ") + to_string(k) +
+               " kernel; Wendland C4 (smooth, no pairing instability) with the same neighbour number is used"};
+      break;
+  }
+  return m;
+}
+
+double smoothing_length_factor(KernelType k, int dim, IcFormat f) {
+  const Kernel kernel(k, dim);
+  if (f == IcFormat::Gadget4) return kernel.support();  // GADGET's h is the support radius H
+  return kernel.support() / kernel_mapping(k, dim, f).ratio;
+}
+
+std::string parameter_file(const World& world, IcFormat format, const std::string& ic_file,
+                           std::vector<std::string>* warnings) {
+  std::vector<std::string> local;
+  std::vector<std::string>* w = warnings ? warnings : &local;
+  physics_warnings(world, format, w);
+  return format == IcFormat::Swift ? swift_file(world, ic_file, w) : gadget4_file(world, ic_file, w);
+}
+
+}  // namespace sph

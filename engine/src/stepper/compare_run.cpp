@@ -1,0 +1,63 @@
+#include "compare_run.h"
+
+namespace sph::detail {
+
+bool CompareRun::start(const RunConfig& a, const std::vector<std::string>& overrides, std::string* err) {
+  stop();
+  try {
+    world_ = std::make_unique<World>(fork_config(a, overrides));
+  } catch (const std::exception& e) {
+    *err = std::string("compare: run B cannot be built: ") + e.what();
+    return false;
+  }
+  overrides_ = overrides;
+  return true;
+}
+
+void CompareRun::stop() {
+  world_.reset();
+  overrides_.clear();
+  history_.clear();
+}
+
+bool CompareRun::follow(const Params& a, std::string* err) {
+  if (!world_) return true;
+  try {
+    RunConfig cfg = world_->config();
+    cfg.params = a;
+    world_->set_params(fork_config(cfg, overrides_).params);
+    return true;
+  } catch (const std::exception& e) {
+    *err = std::string("compare: run B keeps its parameters: ") + e.what();
+    return false;
+  }
+}
+
+bool CompareRun::advance_to(double t, std::string* err) {
+  if (!world_) return true;
+  try {
+    world_->advance_to(t);
+    return true;
+  } catch (const std::exception& e) {
+    std::string label;
+    for (const std::string& o : overrides_) label += (label.empty() ? "" : ", ") + o;
+    *err = "run B (" + label + "): " + e.what();
+    return false;
+  }
+}
+
+void CompareRun::sample() {
+  if (world_) history_.add(history_sample(*world_));
+}
+
+void CompareRun::fill(CompareFrame& f) const {
+  f.overrides = overrides_;
+  f.snapshot = world_->snapshot();
+  f.diagnostics = world_->diagnostics();
+  f.ref_values = world_->reference_values();
+  f.history = history_.samples();
+  f.warnings = world_->warnings();
+  f.config = world_->config();
+}
+
+}  // namespace sph::detail

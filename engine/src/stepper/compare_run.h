@@ -1,0 +1,41 @@
+// Run B of an A/B comparison, owned by the engine thread beside the first World (run A): built from A's
+// scene, params and scene values with B's overrides applied, stepped to A's times, following A's posted
+// params (with its overrides kept), sampled into a history at A's sampling times.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "history.h"
+#include "sph/compare.h"
+#include "sph/stepper.h"
+#include "sph/world.h"
+
+namespace sph::detail {
+
+class CompareRun {
+ public:
+  bool on() const { return world_ != nullptr; }
+  const World* world() const { return world_.get(); }
+  const std::vector<std::string>& overrides() const { return overrides_; }
+
+  /// Builds B from A's config (at t = 0; its history starts empty: sample() with A's first sample);
+  /// false with *err (the comparison is then off).
+  bool start(const RunConfig& a, const std::vector<std::string>& overrides, std::string* err);
+  /// Rebuilds B with the same overrides from A's new config (a reset, a load, a scene value).
+  bool restart(const RunConfig& a, std::string* err) { return start(a, std::vector<std::string>(overrides_), err); }
+  void stop();
+  /// B adopts A's params with its overrides applied again; false with *err if B cannot run them.
+  bool follow(const Params& a, std::string* err);
+  /// Steps B to time t; false with *err naming run B if it diverged or failed.
+  bool advance_to(double t, std::string* err);
+  void sample();                   ///< one history sample (call with A's)
+  void fill(CompareFrame& f) const;  ///< everything but the inspection
+
+ private:
+  std::unique_ptr<World> world_;
+  std::vector<std::string> overrides_;
+  History history_;
+};
+
+}  // namespace sph::detail

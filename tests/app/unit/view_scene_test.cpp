@@ -1,0 +1,50 @@
+// What the particle view is given from a stepper frame: run B and the labels when comparing (the
+// overridden keys with each run's values), both runs' reference errors, and the inspected particle with
+// its neighbours weighted by W relative to the largest.
+#include <gtest/gtest.h>
+
+#include "view_scene.h"
+
+namespace sph::gui {
+namespace {
+
+TEST(ViewScene, OneRunOrTwoWithTheirLabelsAndErrors) {
+  StepperFrame f;
+  f.config = RunConfig::from_scene("sod");
+  f.ref_columns = {{"count", "", false}, {"L1_rho", "", true}};
+  f.ref_values = {400, 0.003};
+  render::FrameScene one = view_scene(f);
+  EXPECT_EQ(one.a, &f.snapshot);
+  EXPECT_EQ(one.b, nullptr);
+  EXPECT_LT(one.highlight.index, 0);
+  f.comparing = true;
+  f.compare.overrides = {"kernel.type=M6"};
+  f.compare.config = f.config;
+  f.compare.config.set("kernel.type", "M6", "test");
+  f.compare.ref_values = {400, 0.0028};
+  const render::FrameScene two = view_scene(f);
+  EXPECT_EQ(two.b, &f.compare.snapshot);
+  EXPECT_EQ(two.label_a, "A: kernel.type=M4");
+  EXPECT_EQ(two.label_b, "B: kernel.type=M6");
+  ASSERT_EQ(two.errors_b.size(), 2u);
+  EXPECT_EQ(two.errors_b[1], (std::pair<std::string, double>{"L1_rho", 0.0028}));
+}
+
+TEST(ViewScene, HighlightWeightsAreRelativeToTheLargestW) {
+  Inspection in;
+  in.id = 7;
+  InspectNeighbour a, b;
+  a.id = 6;
+  a.W = 2.0;
+  b.id = 9;
+  b.W = 0.5;
+  in.neighbour_list = {a, b};
+  const render::Highlight h = highlight_of(in);
+  EXPECT_EQ(h.index, 7);
+  ASSERT_EQ(h.neighbours.size(), 2u);
+  EXPECT_EQ(h.neighbours[0], (std::pair<std::uint32_t, float>{6, 1.f}));
+  EXPECT_EQ(h.neighbours[1], (std::pair<std::uint32_t, float>{9, 0.25f}));
+}
+
+}  // namespace
+}  // namespace sph::gui

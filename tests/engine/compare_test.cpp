@@ -1,0 +1,34 @@
+// A/B comparisons' configurations (engine/src/params/compare.cpp): run B is A with its overrides, a bad
+// override is refused naming it, labels give each run's value of the overridden keys, and the
+// differences of two configurations are listed key by key.
+#include <gtest/gtest.h>
+
+#include "sph/compare.h"
+
+namespace sph {
+namespace {
+
+TEST(Compare, ForkAppliesTheOverrides) {
+  const RunConfig a = RunConfig::from_scene("sod");
+  const RunConfig b = fork_config(a, {"kernel.type=M6", "scene.n_left=800", "visc.alpha=0"});
+  EXPECT_EQ(b.params.kernel.type, KernelType::M6);
+  EXPECT_EQ(b.values.at("n_left"), 800.0);
+  EXPECT_EQ(b.params.visc.alpha, 0.0);
+  EXPECT_EQ(a.params.kernel.type, KernelType::M4);
+  EXPECT_THROW(fork_config(a, {"kernel.type=M9"}), ConfigError);
+  EXPECT_THROW(fork_config(a, {"M6"}), ConfigError);
+  EXPECT_THROW(fork_config(a, {"xsph.eps=0.5"}), ConfigError);  // a stage sod does not run
+}
+
+TEST(Compare, LabelsAndDifferences) {
+  const RunConfig a = RunConfig::from_scene("sod");
+  const std::vector<std::string> o = {"kernel.type=M6", "scene.n_left=800"};
+  const RunConfig b = fork_config(a, o);
+  EXPECT_EQ(compare_label(a, o), "kernel.type=M4, scene.n_left=400");
+  EXPECT_EQ(compare_label(b, o), "kernel.type=M6, scene.n_left=800");
+  EXPECT_EQ(differences(a, b), o);
+  EXPECT_TRUE(differences(a, a).empty());
+}
+
+}  // namespace
+}  // namespace sph

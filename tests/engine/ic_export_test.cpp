@@ -1,0 +1,82 @@
+// The mapping to SWIFT and GADGET-4 (sph/ic_export.h): kernels and their H/h (Dehnen & Aly 2012),
+// smoothing lengths in each code's convention, and what the parameter files say.
+#include "sph/ic_export.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace sph {
+namespace {
+
+TEST(KernelMapping, SplinesAndWendlandsMapOneToOne) {
+  EXPECT_EQ(kernel_mapping(KernelType::M4, 3, IcFormat::Swift).name, "cubic-spline");
+  EXPECT_EQ(kernel_mapping(KernelType::M6, 2, IcFormat::Swift).name, "quintic-spline");
+  EXPECT_EQ(kernel_mapping(KernelType::WendlandC2, 3, IcFormat::Swift).name, "wendland-C2");
+  EXPECT_TRUE(kernel_mapping(KernelType::M5, 1, IcFormat::Swift).exact);
+  EXPECT_EQ(kernel_mapping(KernelType::M4, 2, IcFormat::Gadget4).name, "CUBIC_SPLINE_KERNEL");
+  EXPECT_EQ(kernel_mapping(KernelType::WendlandC4, 3, IcFormat::Gadget4).name, "WENDLAND_C4_KERNEL");
+}
+
+TEST(KernelMapping, WhatTheTargetLacksIsNamed) {
+  const KernelMapping g = kernel_mapping(KernelType::Gaussian, 3, IcFormat::Swift);
+  EXPECT_FALSE(g.exact);
+  EXPECT_EQ(g.name, "quintic-spline");
+  EXPECT_NE(g.note.find("no Gaussian"), std::string::npos);
+  EXPECT_FALSE(kernel_mapping(KernelType::WendlandC2, 1, IcFormat::Swift).exact);  // no 1D Wendland in SWIFT
+  EXPECT_FALSE(kernel_mapping(KernelType::M6, 3, IcFormat::Gadget4).exact);
+}
+
+TEST(SmoothingLength, EachCodesConvention) {
+  // SWIFT: h = H / gamma_K with H the support radius (2h for M4 here); Dehnen & Aly Table 1
+  EXPECT_NEAR(smoothing_length_factor(KernelType::M4, 3, IcFormat::Swift), 2.0 / 1.825742, 1e-15);
+  EXPECT_NEAR(smoothing_length_factor(KernelType::M4, 1, IcFormat::Swift), 2.0 / 1.732051, 1e-15);
+  EXPECT_NEAR(smoothing_length_factor(KernelType::M6, 2, IcFormat::Swift), 3.0 / 2.158131, 1e-15);
+  // GADGET-4: h is the support radius itself
+  EXPECT_EQ(smoothing_length_factor(KernelType::M4, 2, IcFormat::Gadget4), 2.0);
+  EXPECT_EQ(smoothing_length_factor(KernelType::WendlandC2, 3, IcFormat::Gadget4), 2.0);
+}
+
+TEST(ParameterFile, SwiftGetsTheSameSupportInSpacings) {
+  RunConfig cfg = RunConfig::from_scene("sod");
+  cfg.set("scene.n_left", "50", "test");
+  const World w(cfg);
+  std::vector<std::string> warnings;
+  const std::string yml = parameter_file(w, IcFormat::Swift, "sod.hdf5", &warnings);
+  // H = 2 * 1.2 dx here; SWIFT's H = 1.732051 eta dx: eta = 2.4 / 1.732051
+  char eta[64];
+  std::snprintf(eta, sizeof eta, "resolution_eta:  %.10g", 2.4 / 1.732051);
+  EXPECT_NE(yml.find(eta), std::string::npos) << yml;
+  EXPECT_NE(yml.find("--with-hydro-dimension=1 --with-kernel=cubic-spline --with-hydro=minimal --with-adiabatic-index=7/5"),
+            std::string::npos);
+  EXPECT_NE(yml.find("time_end:   0.2"), std::string::npos);
+  EXPECT_NE(yml.find("file_name: ./sod.hdf5"), std::string::npos);
+  EXPECT_NE(yml.find("periodic:  1"), std::string::npos);
+  bool walls = false;
+  for (const std::string& m : warnings) walls = walls || m.find("mirror walls on axis x") != std::string::npos;
+  EXPECT_TRUE(walls);
+}
+
+TEST(ParameterFile, Gadget4GetsItsNeighbourNumberAndConfigOptions) {
+  RunConfig cfg = RunConfig::from_scene("box_lattice");
+  const World w(cfg);
+  std::vector<std::string> warnings;
+  const std::string txt = parameter_file(w, IcFormat::Gadget4, "box.hdf5", &warnings);
+  // 2D M4 at eta 1.2: pi (2 * 1.2)^2 = 18.1 neighbours inside the support
+  EXPECT_NE(txt.find("DesNumNgb                         18"), std::string::npos) << txt;
+  EXPECT_NE(txt.find("%   TWODIMS"), std::string::npos);
+  EXPECT_NE(txt.find("%   PERIODIC"), std::string::npos);
+  EXPECT_NE(txt.find("%   GAMMA=1.4"), std::string::npos);
+  EXPECT_NE(txt.find("InitCondFile                      box"), std::string::npos);
+  EXPECT_NE(txt.find("BoxSize                           1"), std::string::npos);
+  EXPECT_TRUE(warnings.empty()) << warnings.front();
+}
+
+TEST(Hdf5Snapshot, RefusesTheFinitePointsetMethod) {
+  const World w(RunConfig::from_scene("burgers_upwind"));
+  EXPECT_FALSE(hdf5_unsupported(w.params()).empty());
+  EXPECT_THROW(hdf5_snapshot(w, IcFormat::Swift), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace sph
