@@ -141,10 +141,11 @@ TEST(LatticeStability, RunsGrowAtThePredictedRateOrStayAtRest) {
   double v = 0.0;
   const double rate = measured_rate("wendland_c2", 80.0, &v);
   EXPECT_NEAR(rate, std::sqrt(-ev[0]), 0.05 * std::sqrt(-ev[0])) << "final v_max " << v;
-  // M4 (the scene's default): at rest to round-off over the same time
+  // M4 (the scene's default): at rest to round-off over the same time (below the fit window's 1e-11,
+  // where the unstable kernel's mode is already growing; the exact level depends on summation order)
   const double none = measured_rate("M4", 80.0, &v);
   EXPECT_EQ(none, 0.0);
-  EXPECT_LT(v, 1e-12);
+  EXPECT_LT(v, 1e-11);
 }
 
 }  // namespace

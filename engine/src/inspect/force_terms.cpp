@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "physics/corrected_kernel.h"
-#include "physics/pair_filter.h"
+#include "physics/pair_block.h"
 #include "physics/pair_terms.h"
 
 namespace sph {
@@ -54,7 +54,7 @@ struct PairOut {
   std::array<double, kTermCount> du{};
 };
 
-/// The pair loop: particle i's interacting neighbours in list order (pair_filter.h, as the force
+/// The pair loop: particle i's interacting neighbours in list order (pair_block.h, as the force
 /// loops take them), each pair split by `pair(j, r_vec, r, out)`, summed per term and per neighbour.
 /// Which terms the scene's physics runs (the others are left out of the list).
 using Active = std::array<bool, kTermCount>;
@@ -66,11 +66,13 @@ void sum_pairs(const StageContext& c, std::size_t i, bool skip_walls, const Term
   const auto& h = p[Field::H];
   const auto& m = p[Field::Mass];
   const double rho_i = p.has(Field::Density) ? p[Field::Density][i] : std::nan("");
-  std::vector<std::uint32_t> near;
-  const std::size_t count = interacting(p, h.data(), i, c.nl.of(i), c.kernel.support(), skip_walls, near);
+  std::vector<double> R2(p.total());  // (support h)^2 of every particle, ghosts included [length^2]
+  for (std::size_t k = 0; k < R2.size(); ++k) R2[k] = (c.kernel.support() * h[k]) * (c.kernel.support() * h[k]);
+  PairBlock<0> near;
+  const std::size_t count = gather_pairs(p, R2.data(), i, c.nl.of(i), skip_walls, near);
   std::array<InspectTerm, kTermCount> sum{};
   for (std::size_t k = 0; k < count; ++k) {
-    const std::uint32_t j = near[k];
+    const std::uint32_t j = near.j[k];
     const Vec3 r{p.x[0][i] - p.x[0][j], p.x[1][i] - p.x[1][j], p.x[2][i] - p.x[2][j]};
     const double rr = r.norm();
     PairOut o;
