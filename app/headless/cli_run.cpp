@@ -1,4 +1,5 @@
 #include "cli_run.h"
+#include "sph/thread_wait.h"
 
 #include <omp.h>
 
@@ -261,9 +262,11 @@ int run_command(const RunOptions& opt) {
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (!opt.quiet) {
       const double psteps = static_cast<double>(world.steps()) * static_cast<double>(world.particles().size());
-      std::printf("%s: t = %g after %lld steps, %zu particles, %.3f s wall, %.3g particle-steps/s, %d threads\n",
+      std::printf("%s: t = %g after %lld steps, %zu particles, %.3f s wall, %.3g particle-steps/s, %d threads "
+                  "(the last step on %d; %s waiting)\n",
                   cfg.scene->name.c_str(), world.time(), static_cast<long long>(world.steps()),
-                  world.particles().size(), wall, psteps / wall, omp_get_max_threads());
+                  world.particles().size(), wall, psteps / wall, omp_get_max_threads(), world.last_team(),
+                  thread_wait_policy());
       if (world.has_reference()) {
         const auto& cols = world.reference_columns();
         const std::vector<double> vals = world.reference_values();

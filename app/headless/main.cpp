@@ -13,8 +13,10 @@
 #include "cli_suggest.h"
 #include "exit_codes.h"
 #include "number_checks.h"
+#include "sph/thread_wait.h"
 
 int main(int argc, char** argv) {
+  sph::prefer_sleeping_threads(argv);  // before any OpenMP use (sph/thread_wait.h)
   using namespace sph::cli;
   CLI::App app{"sph: SPH sandbox, headless runs. `sph help SCENE` explains a scene, `sph params` every key.\n"
                "Exit codes: 0 ok, 1 internal error, 2 usage error, 3 invalid scene (unknown scene, malformed\n"

@@ -11,8 +11,8 @@ set -euo pipefail
 build=$1; out=$2; tf=${3:-0.1}
 mkdir -p "$out"
 sph="$build/app/headless/sph"
-# n_side = 97: 97 x 112 = 10,864 particles on the hexagonal lattice (PySPH: 10,816)
-"$sph" run sedov --set scene.n_side=97 --set kernel.type=gaussian --set kernel.eta=1.2 --threads 1 --until "$tf" \
+# n_side = 104: 10,864 particles on the hexagonal lattice of the square box (PySPH: 10,816)
+"$sph" run sedov --set scene.n_side=104 --set kernel.type=gaussian --set kernel.eta=1.2 --threads 1 --until "$tf" \
   --out "$out/sph" > "$out/sph.log" 2>&1
 line=$(grep "particle-steps/s" "$out/sph.log")
 sph_n=$(echo "$line" | sed -E 's/.* ([0-9]+) particles.*/\1/')

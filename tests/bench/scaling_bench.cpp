@@ -12,13 +12,14 @@
 namespace {
 
 double run(int threads, const std::string& scene, const std::string& key, const std::string& value, int steps,
-           std::uint64_t& checksum) {
+           std::uint64_t& checksum, int& team) {
   omp_set_num_threads(threads);
   sph::RunConfig cfg = sph::RunConfig::from_scene(scene);
   cfg.set(key, value, "scaling_bench");
   sph::World w(cfg);
   const auto t0 = std::chrono::steady_clock::now();
   for (int s = 0; s < steps; ++s) w.step();
+  team = w.last_team();
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   checksum = 0;
   for (double x : w.particles().x[0]) {
@@ -39,10 +40,11 @@ int main(int argc, char** argv) {
   const int steps = argc > 4 ? std::stoi(argv[4]) : 20;
   const int threads = argc > 5 ? std::stoi(argv[5]) : 2;
   std::uint64_t c1 = 0, cn = 0;
-  const double t1 = run(1, scene, key, value, steps, c1);
-  const double tn = run(threads, scene, key, value, steps, cn);
-  std::printf("%s %s=%s, %d steps: 1 thread %.3f s, %d threads %.3f s, speed-up %.2f, %s\n", scene.c_str(),
-              key.c_str(), value.c_str(), steps, t1, threads, tn, t1 / tn,
+  int team1 = 0, teamn = 0;
+  const double t1 = run(1, scene, key, value, steps, c1, team1);
+  const double tn = run(threads, scene, key, value, steps, cn, teamn);
+  std::printf("%s %s=%s, %d steps: 1 thread %.3f s, %d threads %.3f s (team chosen last: %d), speed-up %.2f, %s\n",
+              scene.c_str(), key.c_str(), value.c_str(), steps, t1, threads, tn, teamn, t1 / tn,
               c1 == cn ? "identical states" : "STATES DIFFER");
   return c1 == cn ? 0 : 1;
 }

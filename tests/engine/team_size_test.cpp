@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 namespace sph {
 namespace {
 
@@ -48,6 +50,29 @@ TEST(TeamChooser, MeasuresAgainAndFollowsAChangedMachine) {
   const auto used = drive(c, 2, 600, [](int team) { return team == 2 ? 0.55 : 1.0; });
   EXPECT_EQ(c.chosen(), 2);
   EXPECT_EQ(used.back(), 2);
+}
+
+TEST(TeamChooser, AFarSlowerTeamCostsOneStepPerProbe) {
+  // spinning threads beside a busy core: a team step 17x slower than one thread's
+  TeamChooser c;
+  const auto used = drive(c, 2, 2000, [](int team) { return team == 2 ? 17.0 : 1.0; });
+  EXPECT_EQ(c.chosen(), 1);
+  const auto team_steps = std::count(used.begin(), used.end(), 2);
+  // probes at steps 0, 517 and 1546 (each one-thread win doubles the interval): one team step each
+  EXPECT_EQ(team_steps, 3);
+  // the time lost stays below 10% of a one-thread run
+  EXPECT_LT(team_steps * 16.0, 0.1 * 2000);
+}
+
+TEST(TeamChooser, SlowerStepsMeasureAgainBeforeTheInterval) {
+  TeamChooser c;
+  drive(c, 2, 20, [](int team) { return team == 2 ? 0.5 : 1.0; });
+  ASSERT_EQ(c.chosen(), 2);
+  // the other core gets busy 20 steps in: the team's steps triple; within two watch periods and a
+  // probe (well before the 256-step interval) the chooser runs one thread
+  const auto used = drive(c, 2, 60, [](int team) { return team == 2 ? 1.5 : 1.0; });
+  EXPECT_EQ(c.chosen(), 1);
+  EXPECT_EQ(used.back(), 1);
 }
 
 TEST(TeamChooser, OneThreadAllowedMeansOneThread) {
