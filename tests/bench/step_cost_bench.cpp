@@ -1,8 +1,9 @@
 // Cost of a step against problem size (issue 14): for each N, build SCENE with KEY = N, take a few warm-up
-// steps, then time STEPS steps on THREADS threads and report ns per particle-step, neighbours per
-// particle (list entries and inside the support), bytes per particle, the density solve's iterations,
-// ns per neighbour-evaluation of the density sum (per neighbour inside the support, per h iteration) and
-// of the force loop (per neighbour), and ns per list entry for every part of the evaluation. The
+// steps, then time STEPS steps on THREADS threads and report ns per particle-step (wall, and CPU time of
+// all threads, which a busy machine does not inflate), neighbours per particle (list entries and inside
+// the support), bytes per particle, the density solve's iterations, ns per neighbour-evaluation of the
+// density sum (per neighbour inside the support, per h iteration) and of the force loop (per neighbour),
+// and ns per list entry for every part of the evaluation. The
 // per-neighbour figures compare with calibration_bench's "ns per neighbour"; "builds" is the share of
 // evaluations that built new neighbour lists (the others reuse them), "redo" the share whose density
 // solve found an h beyond its list and ran again.
@@ -13,6 +14,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -29,6 +31,14 @@ double rss_bytes() {
   double pages_total = 0, pages_rss = 0;
   f >> pages_total >> pages_rss;
   return pages_rss * 4096.0;
+}
+
+/// CPU time of this process so far, all threads [s]: with one thread the wall time a busy machine
+/// does not inflate (the time the process waited for a core is not in it).
+double cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
 std::vector<std::string> split(const std::string& s, char sep) {
@@ -49,8 +59,8 @@ int main(int argc, char** argv) {
   const int threads = argc > 5 ? std::stoi(argv[5]) : 1;
   omp_set_num_threads(threads);
   std::printf("%s, %d thread(s), %d timed steps after 2 warm-up steps\n", scene.c_str(), threads, steps);
-  std::printf("%9s %10s %8s %8s %8s %6s %9s %9s %7s %6s  per part: ns per list entry\n", "N", "ns/p-step",
-              "list/p", "nbrs/p", "bytes/p", "h-its", "rho ns/nb", "f ns/nb", "builds", "redo");
+  std::printf("%9s %10s %10s %8s %8s %8s %6s %9s %9s %7s %6s  per part: ns per list entry\n", "N", "ns/p-step",
+              "cpu ns/ps", "list/p", "nbrs/p", "bytes/p", "h-its", "rho ns/nb", "f ns/nb", "builds", "redo");
   for (const std::string& value : sizes) {
     const double rss0 = rss_bytes();
     sph::RunConfig cfg = sph::RunConfig::from_scene(scene);
@@ -65,9 +75,11 @@ int main(int argc, char** argv) {
     for (int s = 0; s < 2; ++s) w.step();
     const std::vector<sph::StageTiming> before = w.timings();
     const std::int64_t evals0 = w.evaluations(), builds0 = w.list_builds(), over0 = w.h_overflows();
+    const double cpu0 = cpu_seconds();
     const auto t0 = std::chrono::steady_clock::now();
     for (int s = 0; s < steps; ++s) w.step();
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double cpu = cpu_seconds() - cpu0;
     const double n = static_cast<double>(w.particles().fluid());
     const double pairs = static_cast<double>(w.neighbour_pairs());
     const double evals = static_cast<double>(w.evaluations() - evals0);
@@ -80,7 +92,8 @@ int main(int argc, char** argv) {
       if (after[k].name.rfind("density", 0) == 0) rho_ns = 1e9 * sec / (evals * n * nb * its);
       if (after[k].name.rfind("forces", 0) == 0) force_ns = 1e9 * sec / (evals * n * nb);
     }
-    std::printf("%9.0f %10.1f %8.1f %8.1f %8.0f %6.2f %9.2f %9.2f %7.2f %6.3f ", n, 1e9 * wall / (n * steps), pairs / n,
+    std::printf("%9.0f %10.1f %10.1f %8.1f %8.1f %8.0f %6.2f %9.2f %9.2f %7.2f %6.3f ", n, 1e9 * wall / (n * steps),
+                1e9 * cpu / (n * steps), pairs / n,
                 nb, (rss_bytes() - rss0) / n, ds.mean_iterations, rho_ns, force_ns,
                 static_cast<double>(w.list_builds() - builds0) / evals,
                 static_cast<double>(w.h_overflows() - over0) / evals);
