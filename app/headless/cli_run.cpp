@@ -12,7 +12,9 @@
 
 #include "cli_common.h"
 #include "exit_codes.h"
+#include "run_checkpoint.h"
 #include "run_output.h"
+#include "run_signals.h"
 #include "sph/config.h"
 #include "sph/ic_export.h"
 #include "sph/suggest.h"
@@ -120,13 +122,25 @@ int check_command(const RunOptions& opt) {
   }
 }
 
-int run_command(const RunOptions& opt) {
+int run_command(const RunOptions& opt, const ResumePoint* resume) {
   sph::RunConfig cfg;
   try {
     cfg = resolve(opt);
   } catch (const ConfigError& e) {
     std::fprintf(stderr, "sph: invalid scene: %s\n", e.what());
     return kInvalidScene;
+  }
+  RunConfig as_saved = cfg;  // sph resume --until may move the end: the rest must be as it was
+  if (resume) as_saved.params.time.t_end = resume->t_end;
+  if (resume && as_saved.to_json() != resume->ck.config_json) {
+    std::fprintf(stderr, "sph: checkpoint %s: scene %s resolves to other parameters now than when the run "
+                 "started (its file or this build changed); it cannot be continued\n",
+                 resume->path.c_str(), opt.scene.c_str());
+    return kInvalidScene;
+  }
+  if (opt.checkpoint_every > 0.0 && !checkpoint_unsupported(opt).empty()) {
+    std::fprintf(stderr, "sph: %s\n", checkpoint_unsupported(opt).c_str());
+    return kUsage;
   }
   std::optional<CompareSetup> compare;
   try {
@@ -150,6 +164,7 @@ int run_command(const RunOptions& opt) {
   try {
     const auto t0 = std::chrono::steady_clock::now();
     world_ptr = std::make_unique<World>(cfg);
+    if (resume) world_ptr->restore_state(resume->ck.world, "checkpoint " + resume->path);
     World& world = *world_ptr;
     if (compare) b_ptr = std::make_unique<World>(compare->b);
 #ifdef SPH_HAVE_FRAMES
@@ -200,11 +215,16 @@ int run_command(const RunOptions& opt) {
 #endif
     std::unique_ptr<RunOutput> out, out_b;  // run B's files go to OUT/B
     OutputOptions formats{opt.csv_comments, opt.vtu, opt.splash, opt.hdf5};
-    if (!opt.out.empty()) out = std::make_unique<RunOutput>(opt.out, world, formats);
+    if (!opt.out.empty())
+      out = resume ? std::make_unique<RunOutput>(opt.out, world, formats, resume->output)
+                   : std::make_unique<RunOutput>(opt.out, world, formats);
+    std::unique_ptr<Checkpointer> ck;  // also for the checkpoint a signal asks for (run_signals.h)
+    if (checkpoint_unsupported(opt).empty()) ck = std::make_unique<Checkpointer>(opt, cfg, resume);
+    install_stop_handlers();
     if (!opt.out.empty() && b_ptr) out_b = std::make_unique<RunOutput>(opt.out + "/B", *b_ptr, formats);
     const double dt_out = cfg.params.time.dt_out > 0.0 ? cfg.params.time.dt_out : t_end;
-    int next_out = 1;
-    if (out) { out->write_diagnostics(world); out->write_particles(world); }
+    int next_out = resume ? resume->next_out : 1;
+    if (out && !resume) { out->write_diagnostics(world); out->write_particles(world); }
     if (out_b) { out_b->write_diagnostics(*b_ptr); out_b->write_particles(*b_ptr); }
 #ifdef SPH_HAVE_FRAMES
     int next_frame = 1;
@@ -253,6 +273,8 @@ int run_command(const RunOptions& opt) {
       }
       progress.update(world.time());
 #endif
+      if (ck && (ck->due(world.time()) || stop_signal() != 0)) ck->write(world, *out, next_out);
+      if (stop_signal() != 0) return report_stop(stop_signal(), world, opt, ck != nullptr);
     }
 #ifdef SPH_HAVE_FRAMES
     progress.finish();
@@ -306,6 +328,9 @@ int run_command(const RunOptions& opt) {
   } catch (const IoError& e) {
     std::fprintf(stderr, "sph: I/O error: %s\n", e.what());
     return kIoError;
+  } catch (const CheckpointError& e) {
+    std::fprintf(stderr, "sph: %s\n", e.what());
+    return kInvalidScene;
   }
   return kOk;
 }

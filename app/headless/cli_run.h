@@ -31,9 +31,13 @@ struct RunOptions {
   long long tree_probe = -1;       ///< frames draw the Barnes-Hut walk of this particle (-1: none)
   std::string panels;              ///< profiles: comma-separated fields, one panel each ("rho,v,p,u")
   CompareOptions compare;          ///< run B of an A/B comparison (--compare, --compare-set)
+  double checkpoint_every = 0.0;   ///< --checkpoint-every: simulated time between checkpoints (0 = none)
 };
 
-int run_command(const RunOptions& opt);
+struct ResumePoint;  // run_checkpoint.h
+
+/// `sph run`; with `resume`, continues the run a checkpoint holds (sph resume).
+int run_command(const RunOptions& opt, const ResumePoint* resume = nullptr);
 int check_command(const RunOptions& opt);
 int list_command();
 

@@ -9,6 +9,7 @@
 #include "cli_converge.h"
 #include "cli_export.h"
 #include "cli_help.h"
+#include "cli_resume.h"
 #include "cli_run.h"
 #include "cli_suggest.h"
 #include "exit_codes.h"
@@ -22,7 +23,10 @@ int main(int argc, char** argv) {
                "Exit codes: 0 ok, 1 internal error, 2 usage error, 3 invalid scene (unknown scene, malformed\n"
                "file, unknown key, value out of range), 4 I/O error, 5 diverged (NaN/inf in the state, a\n"
                "finite blow-up of the energy or the timestep, a particle through a wall, a start the h solve\n"
-               "cannot reach). What a run tolerated is listed under \"warnings\" (and in warnings.csv)."};
+               "cannot reach), 130/143 stopped by SIGINT/SIGTERM after a step with a checkpoint written\n"
+               "(continue with `sph resume DIR`; a second signal stops at once). 3 also: a checkpoint that is\n"
+               "missing, truncated, damaged, of another version or not one. What a run tolerated is listed\n"
+               "under \"warnings\" (and in warnings.csv)."};
   app.require_subcommand(1);
   RunOptions opt;
   app.add_subcommand("list", "list the built-in scenes");
@@ -37,6 +41,21 @@ int main(int argc, char** argv) {
   run->add_option("--out", opt.out, "output directory: scene.json, diagnostics.csv, particles_*.csv, errors.csv, csv_meta.json");
   run->add_option("--threads", opt.threads, "OpenMP threads")->check(CLI::Range(1, 1024));
   run->add_flag("--quiet", opt.quiet, "no summary line");
+  run->add_option("--checkpoint-every", opt.checkpoint_every,
+                  "simulated time between checkpoints OUT/checkpoint.sph (needs --out; `sph resume OUT` continues "
+                  "the run bitwise as if it had not stopped)")
+      ->check(finite_from(0.0, true));
+  std::string resume_dir;
+  int resume_threads = 0;
+  double resume_until = -1.0;
+  bool resume_quiet = false;
+  auto* resume = app.add_subcommand("resume", "continue a run stopped at its checkpoint DIR/checkpoint.sph (a signal, "
+                                              "--checkpoint-every) with the options it was started with");
+  resume->add_option("dir", resume_dir, "the --out DIR of the run")->required();
+  resume->add_flag("--quiet", resume_quiet, "no summary line");
+  resume->add_option("--until", resume_until, "a new end time (default: the run's own)")->check(finite_from(0.0, false));
+  resume->add_option("--threads", resume_threads, "OpenMP threads (results do not depend on them)")
+      ->check(CLI::Range(1, 1024));
   run->add_option("--compare", opt.compare.scene,
                   "A/B comparison: run B is this scene name or JSON file (the same scene as A, other parameters), "
                   "stepped to A's times; its files go to OUT/B, its frames beside A's");
@@ -133,6 +152,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("export-ics")) return export_command(ex);
     if (app.got_subcommand("help")) return help_command(help_scene, help_sets);
     if (app.got_subcommand("params")) return params_command();
+    if (app.got_subcommand("resume")) return resume_command(resume_dir, resume_threads, resume_until, resume_quiet);
     return run_command(opt);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "sph: internal error: %s\n", e.what());

@@ -43,7 +43,12 @@ RunOutput::RunOutput(const std::string& dir, const World& world, const OutputOpt
     errors_ << errors_csv_header(world.reference_columns()) << "\n";
     valid_until_ = world.reference()->valid_until();
   }
+  columns_ = particle_columns(world);
+}
+
+std::vector<Field> RunOutput::particle_columns(const World& world) {
   // particle columns: id, position, velocity, then the scene's state fields, then the kind if it has walls
+  std::vector<Field> columns_;
   for (Field f : {Field::Mass, Field::Density, Field::Pressure, Field::Energy, Field::H})
     if (world.particles().has(f)) columns_.push_back(f);
   for (std::size_t k = 0; k < kFieldCount; ++k) {
@@ -51,6 +56,7 @@ RunOutput::RunOutput(const std::string& dir, const World& world, const OutputOpt
     if (world.particles().has(f) && info(f).csv && std::find(columns_.begin(), columns_.end(), f) == columns_.end())
       columns_.push_back(f);
   }
+  return columns_;
 }
 
 void RunOutput::write_diagnostics(const World& world) {

@@ -24,6 +24,15 @@ struct OutputOptions {
   bool hdf5 = false;          ///< --hdf5: particles_NNNNN.hdf5 in the SWIFT layout
 };
 
+/// Where a run's output stood at a checkpoint: enough to continue its files as if it had not stopped.
+struct OutputResume {
+  int files = 0;                     ///< particle files written
+  std::vector<PvdEntry> series;      ///< their times and stems
+  std::vector<std::int64_t> steps;   ///< and steps
+  std::uint64_t diag_bytes = 0;      ///< length of diagnostics.csv
+  std::uint64_t errors_bytes = 0;    ///< length of errors.csv (0 without a reference)
+};
+
 /// Writes `bytes` to path as a whole file (through the one atomic-write seam); throws IoError naming it.
 void write_file(const std::string& path, const std::string& bytes);
 
@@ -31,6 +40,11 @@ class RunOutput {
  public:
   /// Creates DIR (and parents) and writes scene.json; throws IoError naming the path.
   RunOutput(const std::string& dir, const World& world, const OutputOptions& options = {});
+  /// Continues the files of a run stopped at a checkpoint: diagnostics.csv and errors.csv are cut back
+  /// to their length then (rows written after it go) and appended to (run_output_resume.cpp).
+  RunOutput(const std::string& dir, const World& world, const OutputOptions& options, const OutputResume& resume);
+  /// Where the output stands now (the CSV streams are flushed first), for a checkpoint.
+  OutputResume resume_state();
   void write_diagnostics(const World& world);  ///< one row of diagnostics.csv
   /// The next particles_NNNNN.csv (+ a row of errors.csv), and the formats asked for.
   void write_particles(const World& world);
@@ -41,6 +55,8 @@ class RunOutput {
 
  private:
   void write_meta(const World& world) const;
+  /// The fields of the particle files after id, x and v.
+  static std::vector<Field> particle_columns(const World& world);
 
   std::string dir_;
   OutputOptions options_;

@@ -46,6 +46,11 @@ class Integrator {
   /// The particles were reordered (slot k now holds the particle that was at order[k]): history kept
   /// per particle between steps must follow them.
   virtual void permute(std::span<const std::uint32_t> order) { (void)order; }
+  /// History kept between steps that the next step uses (checkpoints): arrays of numbers, bit for bit;
+  /// empty when there is none.
+  virtual std::vector<std::vector<double>> history() const { return {}; }
+  /// Takes back what history() gave (an integrator of the same type). Returns false if it does not fit.
+  virtual bool set_history(const std::vector<std::vector<double>>& h) { return h.empty(); }
 };
 
 std::unique_ptr<Integrator> make_integrator(IntegratorType type);

@@ -129,6 +129,14 @@ class World {
   /// Evaluate the stages for the current state (done automatically by step()).
   void evaluate() { evaluate(t_); }
 
+  /// Everything later steps depend on (particles with their ghosts, kept neighbour lists, integrator
+  /// history, stage state, counters, warnings), bit for bit, for a checkpoint (sph/checkpoint.h).
+  std::string save_state() const;
+  /// Takes over a state save_state() gave, in a world built from the same configuration: the steps
+  /// that follow are bitwise those the saved world would have taken. Throws CheckpointError (naming
+  /// `what`) if the state does not fit this world; the world is then unusable and must be dropped.
+  void restore_state(const std::string& bytes, const std::string& what);
+
  private:
   StageContext context() const;
   /// Evaluates the state an integrator put at time t_eval (within the step).

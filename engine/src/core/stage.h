@@ -89,6 +89,11 @@ class Stage {
   virtual double potential(const StageContext&) const { return 0.0; }
   /// Internal energy the stage stores (an EOS) [energy].
   virtual double internal_energy(const StageContext&) const { return 0.0; }
+  /// State the stage keeps between evaluations that later steps depend on (checkpoints): arrays of
+  /// numbers, bit for bit. Empty for a stage that keeps none.
+  virtual std::vector<std::vector<double>> saved_state() const { return {}; }
+  /// Takes back what saved_state() gave (of a stage of the same type). Returns false if it does not fit.
+  virtual bool restore_state(const std::vector<std::vector<double>>& s) { return s.empty(); }
 };
 
 }  // namespace sph

@@ -54,6 +54,30 @@ class PredictorCorrector final : public Integrator {
     for (auto& d : drift_) apply(d);
     for (auto& r : rates_) apply(r);
   }
+  // [rate_n], a_x, a_y, a_z, drift_x, drift_y, drift_z, then the evolved rates (nothing before a step)
+  std::vector<std::vector<double>> history() const override {
+    if (!have_rates_) return {};
+    std::vector<std::vector<double>> h{{static_cast<double>(rate_n_)}};
+    for (const auto& a : a_) h.push_back(a);
+    for (const auto& d : drift_) h.push_back(d);
+    for (const auto& r : rates_) h.push_back(r);
+    return h;
+  }
+  bool set_history(const std::vector<std::vector<double>>& h) override {
+    if (h.empty()) {
+      have_rates_ = false;
+      return true;
+    }
+    if (h.size() < 7 || h[0].size() != 1) return false;
+    rate_n_ = static_cast<std::size_t>(h[0][0]);
+    for (int k = 0; k < 3; ++k) {
+      a_[k] = h[1 + k];
+      drift_[k] = h[4 + k];
+    }
+    rates_.assign(h.begin() + 7, h.end());
+    have_rates_ = true;
+    return true;
+  }
 
  private:
   void store_rates(const PhaseSpace& s) {

@@ -193,6 +193,14 @@ class FpmBurgers final : public Stage {
     resampled_ = std::move(fresh);
   }
 
+  // the next id a new point gets (ids are below 2^53: exact as a double)
+  std::vector<std::vector<double>> saved_state() const override { return {{static_cast<double>(next_id_)}}; }
+  bool restore_state(const std::vector<std::vector<double>>& s) override {
+    if (s.size() != 1 || s[0].size() != 1) return false;
+    next_id_ = static_cast<std::int64_t>(s[0][0]);
+    return true;
+  }
+
   /// Positions and u of particle i's neighbours (itself included), in the list's fixed order.
   static void gather(const StageContext& c, std::size_t i, std::vector<double>& xs, std::vector<double>& us) {
     const auto nb = c.nl.of(i);

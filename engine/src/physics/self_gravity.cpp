@@ -58,6 +58,21 @@ class SelfGravity final : public Stage {
     return t2 < 1e299 ? std::sqrt(t2) : kNoLimit;
   }
 
+  // the last evaluation's accelerations, potentials and pair times (dt_limit reads them) and positions
+  std::vector<std::vector<double>> saved_state() const override {
+    return {out_.a[0], out_.a[1], out_.a[2], out_.phi, out_.t2_pair, x_eval_[0], x_eval_[1], x_eval_[2]};
+  }
+  bool restore_state(const std::vector<std::vector<double>>& s) override {
+    if (s.size() != 8) return false;
+    for (int k = 0; k < 3; ++k) {
+      out_.a[k] = s[k];
+      x_eval_[k] = s[5 + k];
+    }
+    out_.phi = s[3];
+    out_.t2_pair = s[4];
+    return true;
+  }
+
   double potential(const StageContext& c) const override {
     const Particles& p = c.p;
     const std::size_t n = p.fluid();

@@ -1,0 +1,163 @@
+#include "run_checkpoint.h"
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "exit_codes.h"
+#include "run_signals.h"
+
+#include <csignal>
+#include <cstdio>
+
+namespace sph::cli {
+
+std::string checkpoint_path(const std::string& dir) { return dir + "/checkpoint.sph"; }
+
+std::string options_json(const RunOptions& opt) {
+  nlohmann::ordered_json j;
+  j["scene"] = opt.scene;
+  j["set"] = opt.sets;
+  j["until"] = opt.until;
+  j["out"] = opt.out;
+  j["threads"] = opt.threads;
+  j["quiet"] = opt.quiet;
+  j["csv_comments"] = opt.csv_comments;
+  j["vtu"] = opt.vtu;
+  j["splash"] = opt.splash;
+  j["hdf5"] = opt.hdf5;
+  j["checkpoint_every"] = opt.checkpoint_every;
+  return j.dump();
+}
+
+RunOptions options_from_json(const std::string& text, const std::string& path) {
+  try {
+    const auto j = nlohmann::json::parse(text);
+    RunOptions o;
+    o.scene = j.at("scene").get<std::string>();
+    o.sets = j.at("set").get<std::vector<std::string>>();
+    o.until = j.at("until").get<double>();
+    o.out = j.at("out").get<std::string>();
+    o.threads = j.at("threads").get<int>();
+    o.quiet = j.at("quiet").get<bool>();
+    o.csv_comments = j.at("csv_comments").get<bool>();
+    o.vtu = j.at("vtu").get<bool>();
+    o.splash = j.at("splash").get<bool>();
+    o.hdf5 = j.at("hdf5").get<bool>();
+    o.checkpoint_every = j.at("checkpoint_every").get<double>();
+    return o;
+  } catch (const nlohmann::json::exception& e) {
+    throw CheckpointError("checkpoint " + path + ": its run options cannot be read (" + e.what() + ")");
+  }
+}
+
+namespace {
+
+std::string extra_json(const OutputResume& r, int next_out, std::int64_t next_checkpoint, double t_end) {
+  nlohmann::ordered_json j;
+  j["t_end"] = t_end;
+  j["next_out"] = next_out;
+  j["next_checkpoint"] = next_checkpoint;
+  j["files"] = r.files;
+  nlohmann::ordered_json series = nlohmann::ordered_json::array();
+  for (const PvdEntry& e : r.series) series.push_back({e.t, e.file});
+  j["series"] = series;
+  j["steps"] = r.steps;
+  j["diag_bytes"] = r.diag_bytes;
+  j["errors_bytes"] = r.errors_bytes;
+  return j.dump();
+}
+
+void read_extra(const std::string& text, ResumePoint& rp) {
+  try {
+    const auto j = nlohmann::json::parse(text);
+    rp.t_end = j.at("t_end").get<double>();
+    rp.next_out = j.at("next_out").get<int>();
+    rp.next_checkpoint = j.at("next_checkpoint").get<std::int64_t>();
+    rp.output.files = j.at("files").get<int>();
+    for (const auto& e : j.at("series")) rp.output.series.push_back({e.at(0).get<double>(), e.at(1).get<std::string>()});
+    rp.output.steps = j.at("steps").get<std::vector<std::int64_t>>();
+    rp.output.diag_bytes = j.at("diag_bytes").get<std::uint64_t>();
+    rp.output.errors_bytes = j.at("errors_bytes").get<std::uint64_t>();
+  } catch (const nlohmann::json::exception& e) {
+    throw CheckpointError("checkpoint " + rp.path + ": its output state cannot be read (" + e.what() + ")");
+  }
+}
+
+/// The streamed CSV `name` in dir must hold at least what it held at the checkpoint.
+void check_output(const std::string& dir, const std::string& name, std::uint64_t bytes, const std::string& ck) {
+  if (bytes == 0) return;
+  const std::string path = dir + "/" + name;
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(path, ec);
+  if (ec) throw CheckpointError("checkpoint " + ck + ": the output it continues, " + path + ", is missing");
+  if (size < bytes)
+    throw CheckpointError("checkpoint " + ck + ": " + path + " is shorter than at the checkpoint (" +
+                          std::to_string(size) + " of " + std::to_string(bytes) + " bytes)");
+}
+
+}  // namespace
+
+ResumePoint load_resume_point(const std::string& dir, RunOptions* opt) {
+  ResumePoint rp;
+  rp.path = checkpoint_path(dir);
+  std::error_code ec;
+  if (!std::filesystem::is_directory(dir, ec))
+    throw CheckpointError("sph resume " + dir + ": no such directory (give the --out DIR of the run)");
+  rp.ck = read_checkpoint(rp.path);
+  *opt = options_from_json(rp.ck.run_options, rp.path);
+  opt->out = dir;  // the directory may have moved since
+  read_extra(rp.ck.extra, rp);
+  check_output(dir, "diagnostics.csv", rp.output.diag_bytes, rp.path);
+  check_output(dir, "errors.csv", rp.output.errors_bytes, rp.path);
+  return rp;
+}
+
+Checkpointer::Checkpointer(const RunOptions& opt, const RunConfig& cfg, const ResumePoint* resume)
+    : path_(checkpoint_path(opt.out)), tmp_(path_ + ".tmp"), options_(options_json(opt)), config_(cfg.to_json()),
+      every_(opt.checkpoint_every), next_(resume ? resume->next_checkpoint : 1) {
+  set_partial_file(tmp_.c_str());
+}
+
+Checkpointer::~Checkpointer() { set_partial_file(nullptr); }
+
+bool Checkpointer::due(double t) const {
+  return every_ > 0.0 && t >= static_cast<double>(next_) * every_ * (1.0 - 1e-12);
+}
+
+void Checkpointer::write(const World& world, RunOutput& out, int next_out) {
+  if (every_ > 0.0)
+    while (due(world.time())) ++next_;
+  Checkpoint ck;
+  ck.config_json = config_;
+  ck.run_options = options_;
+  ck.world = world.save_state();
+  ck.extra = extra_json(out.resume_state(), next_out, next_, world.config().params.time.t_end);
+  const std::string err = write_checkpoint(path_, ck);
+  if (!err.empty()) throw IoError(err);
+}
+
+}  // namespace sph::cli
+
+namespace sph::cli {
+
+std::string checkpoint_unsupported(const RunOptions& opt) {
+  if (opt.out.empty()) return "--checkpoint-every needs --out DIR (the checkpoint goes beside the CSVs)";
+  if (!opt.compare.scene.empty() || !opt.compare.sets.empty())
+    return "--checkpoint-every does not cover --compare runs";
+  if (!opt.frames.empty() || !opt.video.empty()) return "--checkpoint-every does not cover --frames or --video";
+  return "";
+}
+
+int report_stop(int sig, const World& world, const RunOptions& opt, bool checkpointed) {
+  const char* name = sig == SIGINT ? "SIGINT" : sig == SIGTERM ? "SIGTERM" : "a signal";
+  std::fprintf(stderr, "sph: stopped by %s at t = %.17g after step %lld\n", name, world.time(),
+               static_cast<long long>(world.steps()));
+  if (checkpointed)
+    std::fprintf(stderr, "sph: checkpoint %s written; continue with:\n  sph resume %s\n",
+                 checkpoint_path(opt.out).c_str(), opt.out.c_str());
+  else
+    std::fprintf(stderr, "sph: no checkpoint (%s)\n", checkpoint_unsupported(opt).c_str());
+  return sig == SIGTERM ? kTerminated : kInterrupted;
+}
+
+}  // namespace sph::cli
