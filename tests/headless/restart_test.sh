@@ -1,0 +1,142 @@
+#!/usr/bin/env bash
+# Checkpoint and restart of `sph run` (README "Checkpoints"): a resumed run is bitwise the run that never
+# stopped, in every output file; signals stop a run with a checkpoint; a run killed at random moments
+# resumes to the same files; damaged checkpoints are refused with exit 3 naming the file.
+# usage: restart_test.sh matrix|signals|kill|damaged PATH_TO_SPH
+set -u
+mode=$1; sph=$2
+source "$(dirname "$0")/test_lib.sh"
+export OMP_WAIT_POLICY=passive  # else sph sets it and re-executes itself (same pid, but a signal could land first)
+
+# same DIR_A DIR_B: every output file of A is in B, byte for byte (the checkpoint aside); prints the odd ones
+same() {
+  local f rc=0
+  for f in "$1"/*; do
+    case $(basename "$f") in checkpoint.sph) continue ;; esac
+    cmp -s "$f" "$2/$(basename "$f")" || { echo "  differs: $(basename "$f")"; rc=1; }
+  done
+  [ "$(ls "$1" | grep -vc '^checkpoint.sph$')" = "$(ls "$2" | grep -vc '^checkpoint.sph$')" ] || { echo "  file lists differ"; rc=1; }
+  return $rc
+}
+
+# complete DIR: no temporary file left, every CSV ends with a newline and has as many fields per row as its header
+complete() {
+  local f
+  [ -z "$(ls "$1" | grep '\.tmp$')" ] || { echo "  temporary files left: $(ls "$1" | grep '\.tmp$')"; return 1; }
+  for f in "$1"/*.csv; do
+    [ "$(tail -c 1 "$f" | od -An -c | tr -d ' ')" = '\n' ] || { echo "  $f does not end with a newline"; return 1; }
+    awk -F, 'NR == 1 { n = NF } NF != n { bad = 1 } END { exit bad }' "$f" || { echo "  $f: a row of another width"; return 1; }
+  done
+}
+
+case $mode in
+matrix)
+  # scene x integrator: to T uninterrupted; to T/2 with a checkpoint, resumed to T; T/2 is an output time
+  while read -r scene T sets; do
+    for integ in euler leapfrog predictor_corrector rk4; do
+      name="$scene/$integ"; a="$work/${scene}_${integ}_a"; b="$work/${scene}_${integ}_b"
+      "$sph" run "$scene" $sets --set time.integrator=$integ --until "$T" --threads 1 --quiet --out "$a" 2> /dev/null
+      check "$name uninterrupted" 0 $?
+      half=$(awk -v t="$T" 'BEGIN { printf "%.17g", t / 2 }')
+      "$sph" run "$scene" $sets --set time.integrator=$integ --until "$half" --checkpoint-every "$half" --threads 1 \
+        --quiet --out "$b" 2> /dev/null
+      check "$name first half" 0 $?
+      "$sph" resume "$b" --until "$T" --quiet 2> /dev/null; check "$name resumed" 0 $?
+      ok "$name: every file identical" same "$a" "$b"
+      echo "$name: $(same "$a" "$b" > /dev/null && echo identical || echo DIFFERENT) ($(ls "$a" | wc -l) files)"
+    done
+  done << 'SCENES'
+sod 0.1 --set scene.n_left=100 --set time.dt_out=0.025
+dam_break 0.1 --set scene.dx=0.1 --set time.dt_out=0.025
+evrard 0.2 --set scene.n=300 --set time.dt_out=0.05
+kepler 1 --set time.dt_out=0.25
+burgers_upwind 0.5 --set time.dt_out=0.125
+SCENES
+  ;;
+signals)
+  run=(run dam_break --set scene.dx=0.05 --until 0.3 --threads 1 --quiet)
+  "$sph" "${run[@]}" --out "$work/whole" 2> /dev/null; check "uninterrupted" 0 $?
+  for sig in INT TERM; do
+    d="$work/$sig"; want=$([ $sig = INT ] && echo 130 || echo 143)
+    "$sph" "${run[@]}" --out "$d" 2> "$work/$sig.err" &
+    pid=$!
+    for _ in $(seq 200); do [ "$(wc -l 2> /dev/null < "$d/diagnostics.csv" || echo 0)" -gt 100 ] && break; sleep 0.02; done
+    kill -$sig $pid; wait $pid; check "SIG$sig exit code" "$want" $?
+    ok "SIG$sig: checkpoint written" test -s "$d/checkpoint.sph"
+    ok "SIG$sig: says how to resume" grep -q "sph resume $d" "$work/$sig.err"
+    ok "SIG$sig: stopped mid-run" test ! -e "$d/warnings.csv"
+    "$sph" resume "$d" --quiet 2> /dev/null; check "SIG$sig resumed" 0 $?
+    ok "SIG$sig: resumed files identical" same "$work/whole" "$d"
+    ok "SIG$sig: complete files" complete "$d"
+  done
+  # a second signal stops at once: exit 130, and no partial checkpoint (only a complete one, or none)
+  d="$work/twice"
+  "$sph" "${run[@]}" --out "$d" 2> /dev/null &
+  pid=$!
+  for _ in $(seq 200); do [ "$(wc -l 2> /dev/null < "$d/diagnostics.csv" || echo 0)" -gt 100 ] && break; sleep 0.02; done
+  kill -INT $pid; kill -INT $pid; wait $pid; check "second SIGINT exit code" 130 $?
+  ok "second SIGINT: no temporary checkpoint" test ! -e "$d/checkpoint.sph.tmp"
+  if [ -e "$d/checkpoint.sph" ]; then
+    "$sph" resume "$d" --quiet 2> /dev/null; check "second SIGINT: resumed" 0 $?
+    ok "second SIGINT: resumed files identical" same "$work/whole" "$d"
+  fi
+  ;;
+kill)
+  # kill -9 at 20 moments drawn from a seeded generator; resume each from its last checkpoint
+  run=(run sod --set scene.n_left=400 --until 0.2 --threads 1 --quiet --checkpoint-every 0.01)
+  start=$(date +%s%N)
+  "$sph" "${run[@]}" --out "$work/whole" 2> /dev/null; check "uninterrupted" 0 $?
+  wall_ms=$(( ($(date +%s%N) - start) / 1000000 ))
+  RANDOM=11
+  resumed=0 killed=0
+  for i in $(seq 20); do
+    d="$work/k$i"
+    delay=$(awk -v r=$RANDOM -v w=$wall_ms 'BEGIN { printf "%.3f", r / 32768 * w / 1000 }')
+    "$sph" "${run[@]}" --out "$d" 2> /dev/null &
+    pid=$!
+    sleep "$delay"; kill -9 $pid 2> /dev/null; wait $pid 2> /dev/null
+    [ $? -eq 137 ] && killed=$((killed + 1))  # else it had finished before the kill
+    if [ -e "$d/checkpoint.sph" ]; then
+      "$sph" resume "$d" --quiet 2> /dev/null; check "kill $i (after ${delay}s) resumed" 0 $?
+      resumed=$((resumed + 1))
+    else  # killed before its first checkpoint: start again
+      "$sph" "${run[@]}" --out "$d" 2> /dev/null; check "kill $i (after ${delay}s) rerun" 0 $?
+    fi
+    ok "kill $i (after ${delay}s): files identical" same "$work/whole" "$d"
+    ok "kill $i: complete files" complete "$d"
+  done
+  echo "$killed of 20 runs killed mid-run, $resumed resumed from a checkpoint (the others had none yet); a run takes ${wall_ms} ms"
+  ok "most kills landed mid-run" test $killed -ge 12
+  ok "most kills resumed from a checkpoint" test $resumed -ge 10
+  ;;
+damaged)
+  d="$work/good"
+  "$sph" run sod --set scene.n_left=60 --until 0.05 --checkpoint-every 0.05 --quiet --out "$d" 2> /dev/null
+  check "checkpointed run" 0 $?
+  ck="$d/checkpoint.sph"; size=$(stat -c %s "$ck")
+  # refused DAMAGE MESSAGE COMMAND: a copy of the run whose checkpoint COMMAND damaged (run in the copy)
+  refused() {
+    local x="$work/$1"
+    rm -rf "$x"; cp -r "$d" "$x"; (cd "$x" && eval "$3")
+    local before; before=$(cat "$x"/*.csv | md5sum)
+    "$sph" resume "$x" 2> "$work/$1.err"; check "$1: exit 3" 3 $?
+    ok "$1: the message names the file" grep -q "$x/checkpoint.sph" "$work/$1.err"
+    ok "$1: the message says why ($2)" grep -q "$2" "$work/$1.err"
+    ok "$1: one line" test "$(wc -l < "$work/$1.err")" -eq 1
+    ok "$1: nothing written" test "$(cat "$x"/*.csv | md5sum)" = "$before"
+  }
+  refused truncated "truncated" "truncate -s $((size / 2)) checkpoint.sph"
+  refused flipped "checksum" "printf '\\x55' | dd of=checkpoint.sph bs=1 seek=$((size / 2)) conv=notrunc status=none"
+  refused version "version 7" "printf '\\x07' | dd of=checkpoint.sph bs=1 seek=8 conv=notrunc status=none"
+  refused foreign "not a checkpoint" "cp particles_00000.csv checkpoint.sph"
+  refused empty "empty" ": > checkpoint.sph"
+  refused directory "directory" "rm checkpoint.sph && mkdir checkpoint.sph"
+  refused missing "no such file" "rm checkpoint.sph"
+  "$sph" resume "$work/nowhere" 2> "$work/nowhere.err"; check "no such directory: exit 3" 3 $?
+  ok "no such directory: named" grep -q "$work/nowhere" "$work/nowhere.err"
+  "$sph" resume "$d" --quiet; check "the undamaged checkpoint resumes" 0 $?
+  ;;
+esac
+
+echo "$passes passed, $fails failed"
+[ "$fails" -eq 0 ]
