@@ -1,5 +1,5 @@
 // When the engine finds a NaN or inf it pauses; this dialog says which particle and step, suggests what
-// to change, and offers a reset (or keeping the broken state on screen to look at it).
+// to change, and offers a reset (or keeping the broken state on screen to look at it, or saving it).
 #include <imgui.h>
 
 #include "panels.h"
@@ -27,6 +27,7 @@ void divergence_modal(GuiState& s) {
     ImGui::Text("step %lld, t = %.6g", static_cast<long long>(f->diverged_step), f->snapshot.t);
   ImGui::TextDisabled("The engine is paused. Try a smaller dt or cfl, more viscosity (alpha, beta), or another "
                       "integrator, then reset.");
+  if (!f->notice.empty()) ImGui::TextDisabled("%s", f->notice.c_str());
   ImGui::PopTextWrapPos();
   if (ImGui::Button("Reset and run")) {
     s.reset();
@@ -34,6 +35,10 @@ void divergence_modal(GuiState& s) {
     s.acknowledged_divergence = f->world_serial;
     ImGui::CloseCurrentPopup();
   }
+  ImGui::SameLine();
+  if (ImGui::Button("Save state")) s.save_state(s.state_path);  // the broken state, to look at later
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Write the state as it is now to %s (a checkpoint; the State panel "
+                                                "loads it)", s.state_path.c_str());
   ImGui::SameLine();
   if (ImGui::Button("Keep paused")) {
     s.acknowledged_divergence = f->world_serial;

@@ -25,6 +25,10 @@ void GuiState::update() {
     last_error_ = f->error;
     if (!f->error.empty() && !f->diverged) notify(f->error, true);
   }
+  if (f->notice != last_notice_) {  // a state saved or loaded
+    last_notice_ = f->notice;
+    if (!f->notice.empty()) notify(f->notice);
+  }
   if (f->config.scene) scene_name_ = f->config.scene->name;
   if (resync_version_ != 0 && f->params_version >= resync_version_) {
     resync_from(*f);

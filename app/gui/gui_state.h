@@ -69,6 +69,12 @@ class GuiState {
   void set_record_interval(double every) { stepper_.set_record_interval(every); }
   /// A/B comparison: both runs restart from t = 0, run B with these overrides (key=value); empty: stop.
   void set_compare(const std::vector<std::string>& overrides) { stepper_.set_compare(overrides); }
+  /// Writes the World's whole state to `path` (a checkpoint: `sph run --checkpoint-every`'s format).
+  void save_state(const std::string& path);
+  /// Replaces the World by the state in checkpoint `path` (saved here or by `sph run`); a file that is
+  /// not a readable checkpoint is refused with a message naming it, and the run on screen stays.
+  void load_state(const std::string& path);
+  std::string state_path = "state.sph";  ///< the state panel's file
   /// The particle inspector shows particle `id` (< 0: closes it).
   void inspect(std::int64_t id);
   std::int64_t inspect_id = -1;    ///< as last sent (-1: the inspector is closed)
@@ -123,6 +129,7 @@ class GuiState {
   std::uint64_t awaiting_ = 1;        // a rebuild with this params version is on its way
   std::string scene_name_;
   std::string last_error_;            // the frame error last reported
+  std::string last_notice_;           // the frame notice last reported (state saved or loaded)
   bool fresh_ = false;
 };
 

@@ -81,6 +81,7 @@ struct StepperFrame {
   bool diverged = false;           ///< World::step threw DivergedError (the stepper paused)
   std::int64_t diverged_particle = -1, diverged_step = -1;  ///< its particle id and step
   std::string error;               ///< the divergence or failure message (empty if none)
+  std::string notice;              ///< the last state saved or loaded ("saved state to FILE"), empty if none
 
   double record_every = 0.0;       ///< recording interval (0 = not recording) [time units]
   int record_index = -1;           ///< >= 0: this frame lands on recording time t0 + index x every
@@ -137,6 +138,13 @@ class Stepper {
   void set_compare(const std::vector<std::string>& overrides);
   /// Frames carry World::inspect(id) (and run B's, when comparing); id < 0: none.
   void set_inspect(std::int64_t id);
+  /// Writes the World's whole state to `path` (a checkpoint, as `sph run --checkpoint-every` writes:
+  /// `sph resume` and load_state read it); the frame's notice or error says how it went.
+  void save_state(const std::string& path);
+  /// Replaces the World by the one checkpoint `path` holds (read it with read_checkpoint; `cfg` is its
+  /// configuration, whose params are posted: the return value is their version). A state that does not
+  /// fit keeps the old World and reports the error.
+  std::uint64_t load_state(const std::string& path, const RunConfig& cfg, const std::string& state);
 
   // --- channel 3: snapshots --------------------------------------------------------------------------
   /// The newest published frame, or nullptr before the first. The frame stays valid and unchanged until

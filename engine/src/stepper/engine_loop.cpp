@@ -144,6 +144,13 @@ void EngineLoop::apply(const Command& c) {
     case K::SetCompare:
       start_compare(c.names);
       break;
+    case K::SaveState:
+      save_state(c.name);
+      break;
+    case K::LoadState:
+      rebuild(c.config, &c.state, c.name);
+      adopted_ = std::max(adopted_, c.params_version);
+      break;
     case K::SetInspect:
       inspect_.set_id(std::isfinite(c.value) && c.value >= 0.0 ? static_cast<std::int64_t>(c.value) : -1);
       inspect_b_.set_id(inspect_.id());
@@ -164,10 +171,14 @@ void EngineLoop::adopt(const InboxBatch& b) {
   anchor_pacing();
 }
 
-void EngineLoop::rebuild(const RunConfig& cfg) {
+void EngineLoop::rebuild(const RunConfig& cfg, const std::string* state, const std::string& from) {
   try {
     if (cfg.scene == nullptr) throw ConfigError("no scene given");
     auto w = std::make_unique<World>(cfg);
+    if (state) {
+      w->restore_state(*state, "checkpoint " + from);
+      notice_ = "loaded state from " + from + " (t = " + format(w->time()) + ")";
+    }
     world_ = std::move(w);
     cfg_ = world_->config();
     ++world_serial_;
@@ -330,6 +341,7 @@ void EngineLoop::publish(int record_index) {
   f.diverged_particle = diverged_particle_;
   f.diverged_step = diverged_step_;
   f.error = error_;
+  f.notice = notice_;
   f.record_every = record_every_;
   f.record_index = record_index;
   const bool run = stepping() && running_;

@@ -32,7 +32,10 @@ class EngineLoop {
 
   void apply(const Command& c);          // one command; true state changes only
   void adopt(const InboxBatch& b);       // mailbox params
-  void rebuild(const RunConfig& cfg);    // new World; keeps the old one if the build throws
+  /// New World (with `state`: restored from a checkpoint, World::restore_state); keeps the old one if
+  /// the build or the restore throws.
+  void rebuild(const RunConfig& cfg, const std::string* state = nullptr, const std::string& from = "");
+  void save_state(const std::string& path);  // a checkpoint of world_ (engine_state.cpp)
   void step();                           // one World::step with its bookkeeping
   void start_recording(double every);
   void start_compare(const std::vector<std::string>& overrides);  // A and B from t = 0; empty: stop
@@ -54,6 +57,7 @@ class EngineLoop {
   std::int64_t tree_probe_ = -1;       // particle whose tree walk the frames carry (-1: none)
   std::int64_t diverged_particle_ = -1, diverged_step_ = -1;
   std::string error_;
+  std::string notice_;                 // the last state saved or loaded
   double rtf_ = 0.0;                   // real-time factor (0 = as fast as possible)
   Clock::time_point pace_wall_;        // pacing anchor: wall time ...
   double pace_t_ = 0.0;                // ... and simulated time

@@ -27,6 +27,8 @@ struct Command {
     SetTreeProbe,      ///< `value`: the particle (snapshot index) whose tree walk frames carry; < 0 = none
     SetCompare,        ///< `names`: run B's overrides (key=value); empty = stop comparing
     SetInspect,        ///< `value`: the particle id frames inspect; < 0 = none
+    SaveState,         ///< write a checkpoint of the World to the file `name` (sph/checkpoint.h)
+    LoadState,         ///< build the World from `config` and take over the saved state `state` (from `name`)
   };
   Kind kind = Kind::Pause;
   RunConfig config;                 ///< Reset (params only) and Load
@@ -35,6 +37,7 @@ struct Command {
   std::vector<std::string> names;
   double value = 0.0;
   bool flag = false;
+  std::string state;                ///< LoadState: World::save_state bytes
 };
 
 /// What the engine thread takes in one go.

@@ -56,6 +56,20 @@ std::uint64_t Stepper::reset(const Params& p) {
   return impl_->inbox.push_with_params(std::move(c), p);
 }
 
+void Stepper::save_state(const std::string& path) {
+  Command c = make(Command::Kind::SaveState);
+  c.name = path;
+  impl_->inbox.push(std::move(c));
+}
+
+std::uint64_t Stepper::load_state(const std::string& path, const RunConfig& cfg, const std::string& state) {
+  Command c = make(Command::Kind::LoadState);
+  c.name = path;
+  c.config = cfg;
+  c.state = state;
+  return impl_->inbox.push_with_params(std::move(c), cfg.params);
+}
+
 std::uint64_t Stepper::load(const RunConfig& cfg) {
   Command c = make(Command::Kind::Load);
   c.config = cfg;
