@@ -163,6 +163,7 @@ int run_command(const RunOptions& opt, const ResumePoint* resume) {
   std::unique_ptr<World> world_ptr, b_ptr;  // outlive the try: a run that stops still reports its warnings
   try {
     const auto t0 = std::chrono::steady_clock::now();
+    install_stop_handlers();  // from here a signal stops the run after a step (run_signals.h)
     world_ptr = std::make_unique<World>(cfg);
     if (resume) world_ptr->restore_state(resume->ck.world, "checkpoint " + resume->path);
     World& world = *world_ptr;
@@ -220,7 +221,6 @@ int run_command(const RunOptions& opt, const ResumePoint* resume) {
                    : std::make_unique<RunOutput>(opt.out, world, formats);
     std::unique_ptr<Checkpointer> ck;  // also for the checkpoint a signal asks for (run_signals.h)
     if (checkpoint_unsupported(opt).empty()) ck = std::make_unique<Checkpointer>(opt, cfg, resume);
-    install_stop_handlers();
     if (!opt.out.empty() && b_ptr) out_b = std::make_unique<RunOutput>(opt.out + "/B", *b_ptr, formats);
     const double dt_out = cfg.params.time.dt_out > 0.0 ? cfg.params.time.dt_out : t_end;
     int next_out = resume ? resume->next_out : 1;

@@ -32,6 +32,9 @@ std::string options_json(const RunOptions& opt) {
 RunOptions options_from_json(const std::string& text, const std::string& path) {
   try {
     const auto j = nlohmann::json::parse(text);
+    if (j.contains("program") && j["program"] == "sph-gui")
+      throw CheckpointError("checkpoint " + path + ": a state saved by sph-gui (no run directory to continue); "
+                            "load it in sph-gui's State panel");
     RunOptions o;
     o.scene = j.at("scene").get<std::string>();
     o.sets = j.at("set").get<std::vector<std::string>>();

@@ -78,3 +78,20 @@ TEST(WorldStateRefusal, AStateOfAnotherSceneIsRefused) {
 
 }  // namespace
 }  // namespace sph
+
+namespace sph {
+namespace {
+
+// A checkpoint's scene text (RunConfig::to_json) builds the same configuration again: what the GUI's
+// "load state" relies on for a checkpoint of `sph run`.
+TEST(WorldStateConfig, SceneTextBuildsTheSameConfiguration) {
+  for (const Case& c : kCases) {
+    const RunConfig cfg = config(c, "rk4");
+    RunConfig again = RunConfig::from_json_text(cfg.to_json(), "test");
+    again.validate();
+    EXPECT_EQ(again.to_json(), cfg.to_json()) << c.scene;
+  }
+}
+
+}  // namespace
+}  // namespace sph

@@ -82,8 +82,9 @@ signals)
   fi
   ;;
 kill)
-  # kill -9 at 20 moments drawn from a seeded generator; resume each from its last checkpoint
-  run=(run sod --set scene.n_left=400 --until 0.2 --threads 1 --quiet --checkpoint-every 0.01)
+  # kill -9 at 20 moments drawn from a seeded generator; resume each from its last checkpoint (with the
+  # ParaView, SPLASH and HDF5 files too)
+  run=(run sod --set scene.n_left=400 --until 0.2 --threads 1 --quiet --checkpoint-every 0.01 --vtu --splash --hdf5)
   start=$(date +%s%N)
   "$sph" "${run[@]}" --out "$work/whole" 2> /dev/null; check "uninterrupted" 0 $?
   wall_ms=$(( ($(date +%s%N) - start) / 1000000 ))

@@ -32,7 +32,9 @@ void attr(hid_t obj, const char* name, hid_t file_type, hid_t mem_type, const st
 void dataset(hid_t group, const char* name, hid_t file_type, hid_t mem_type, const std::vector<hsize_t>& dims,
              const void* data) {
   Handle space = dataspace(dims);
-  Handle d{check(H5Dcreate2(group, name, file_type, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+  Handle dcpl{check(H5Pcreate(H5P_DATASET_CREATE), "dataset creation list"), H5Pclose};
+  check_status(H5Pset_obj_track_times(dcpl.get(), false), "no modification times");  // same run, same bytes
+  Handle d{check(H5Dcreate2(group, name, file_type, space.get(), H5P_DEFAULT, dcpl.get(), H5P_DEFAULT),
                  std::string("dataset ") + name),
            H5Dclose};
   check_status(H5Dwrite(d.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), std::string("writing ") + name);
@@ -90,7 +92,9 @@ Handle open_file(const std::string& path) {
 }
 
 Handle create_group(hid_t loc, const char* name) {
-  return {check(H5Gcreate2(loc, name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), std::string("group ") + name), H5Gclose};
+  Handle gcpl{check(H5Pcreate(H5P_GROUP_CREATE), "group creation list"), H5Pclose};
+  check_status(H5Pset_obj_track_times(gcpl.get(), false), "no modification times");  // same run, same bytes
+  return {check(H5Gcreate2(loc, name, H5P_DEFAULT, gcpl.get(), H5P_DEFAULT), std::string("group ") + name), H5Gclose};
 }
 
 bool exists(hid_t loc, const char* path) {
