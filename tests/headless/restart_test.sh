@@ -64,6 +64,7 @@ signals)
     kill -$sig $pid; wait $pid; check "SIG$sig exit code" "$want" $?
     ok "SIG$sig: checkpoint written" test -s "$d/checkpoint.sph"
     ok "SIG$sig: says how to resume" grep -q "sph resume $d" "$work/$sig.err"
+    ok "SIG$sig: says where it stopped" grep -q "stopped by SIG$sig at t = .* after step" "$work/$sig.err"
     ok "SIG$sig: stopped mid-run" test ! -e "$d/warnings.csv"
     "$sph" resume "$d" --quiet 2> /dev/null; check "SIG$sig resumed" 0 $?
     ok "SIG$sig: resumed files identical" same "$work/whole" "$d"
@@ -136,6 +137,11 @@ damaged)
   "$sph" resume "$work/nowhere" 2> "$work/nowhere.err"; check "no such directory: exit 3" 3 $?
   ok "no such directory: named" grep -q "$work/nowhere" "$work/nowhere.err"
   "$sph" resume "$d" --quiet; check "the undamaged checkpoint resumes" 0 $?
+  # checkpoints need --out, and do not cover A/B comparisons: usage errors, nothing written
+  "$sph" run sod --checkpoint-every 0.1 2> /dev/null; check "--checkpoint-every without --out" 2 $?
+  "$sph" run sod --checkpoint-every 0.1 --compare-set kernel.type=M6 --out "$work/ab" 2> /dev/null
+  check "--checkpoint-every with --compare-set" 2 $?
+  ok "--compare-set refused before writing" test ! -e "$work/ab"
   ;;
 esac
 
