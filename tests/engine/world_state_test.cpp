@@ -95,3 +95,27 @@ TEST(WorldStateConfig, SceneTextBuildsTheSameConfiguration) {
 
 }  // namespace
 }  // namespace sph
+
+namespace sph {
+namespace {
+
+// The Kelvin-Helmholtz reference fits a growth rate over every evaluation so far: that history comes
+// back with the state, so the resumed run's rate and point count are the uninterrupted run's.
+TEST(WorldStateReference, AFitOverPastEvaluationsGoesOn) {
+  RunConfig cfg = RunConfig::from_scene("kelvin_helmholtz");
+  cfg.set("scene.n_side", "16", "test");
+  cfg.set("scene.fit_t0", "0", "test");  // every evaluation is in the fit window
+  cfg.validate();
+  World whole(cfg), first(cfg);
+  for (int k = 0; k < 12; ++k) { whole.step(); whole.reference_values(); }
+  for (int k = 0; k < 6; ++k) { first.step(); first.reference_values(); }
+  World resumed(cfg);
+  resumed.restore_state(first.save_state(), "test");
+  for (int k = 0; k < 6; ++k) { resumed.step(); resumed.reference_values(); }
+  EXPECT_EQ(resumed.reference_value("fit_points"), whole.reference_value("fit_points"));
+  EXPECT_EQ(resumed.reference_value("rate_fit"), whole.reference_value("rate_fit"));
+  EXPECT_GE(whole.reference_value("fit_points"), 12.0);
+}
+
+}  // namespace
+}  // namespace sph

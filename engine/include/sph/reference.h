@@ -44,6 +44,11 @@ class Reference {
   virtual double valid_until() const { return std::numeric_limits<double>::infinity(); }
   /// Measured/exact column pairs the GUI plots together against time (e.g. the drop's semi-axes).
   virtual std::vector<std::pair<int, int>> series() const { return {}; }
+  /// What later values depend on besides the particles and t (e.g. a fit over every evaluation so far),
+  /// bit for bit, for checkpoints; empty when nothing.
+  virtual std::vector<double> saved_state() const { return {}; }
+  /// Takes back what saved_state() gave. Returns false if it does not fit.
+  virtual bool restore_state(const std::vector<double>& s) { return s.empty(); }
 };
 
 /// Index of a column by name, or -1.

@@ -98,6 +98,21 @@ class KhReference final : public Reference {
 
   int primary() const override { return 4; }
 
+  // the evaluations so far, (t, M) pairs one after the other: the fit goes on over them after a restart
+  std::vector<double> saved_state() const override {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    std::vector<double> s;
+    for (const auto& [t, m] : history_) { s.push_back(t); s.push_back(m); }
+    return s;
+  }
+  bool restore_state(const std::vector<double>& s) override {
+    if (s.size() % 2 != 0) return false;
+    const std::lock_guard<std::mutex> lock(mutex_);
+    history_.clear();
+    for (std::size_t k = 0; k < s.size(); k += 2) history_.emplace_back(s[k], s[k + 1]);
+    return true;
+  }
+
  private:
   double ramp_, t0_, t1_, theory_, sheet_;
   mutable std::mutex mutex_;  ///< the history below is the only state; evaluate() may come from two threads

@@ -1,5 +1,6 @@
-// World::save_state / restore_state: the whole state later steps depend on, for checkpoints. Scratch
-// (neighbour-search workspace, timings, the team chooser) is left out: results never depend on it.
+// World::save_state / restore_state: the whole state later steps (and reference values) depend on, for
+// checkpoints. Scratch (neighbour-search workspace, timings, the team chooser) is left out: results
+// never depend on it.
 #include <algorithm>
 
 #include "core/pipeline.h"
@@ -90,6 +91,7 @@ std::string World::save_state() const {
   w.put<std::uint64_t>(stats_->correction_fallbacks);
   // integrator history and the stages' own state
   put_arrays(w, integrator_->history());
+  w.put_vec(reference_ ? reference_->saved_state() : std::vector<double>{});
   w.put<std::uint64_t>(pipeline_->stages().size());
   for (const auto& s : pipeline_->stages()) {
     w.put_string(std::string(s->name()));
@@ -197,6 +199,7 @@ void World::restore_state(const std::string& bytes, const std::string& what) {
   stats.density.mean_neighbours = r.get<double>();
   stats.correction_fallbacks = r.get<std::uint64_t>();
   const auto history = get_arrays(r);
+  const auto reference_state = r.get_vec<double>();
   const auto n_stages = r.get<std::uint64_t>();
   if (n_stages != pipeline_->stages().size())
     r.fail("the state has " + std::to_string(n_stages) + " stages, the scene " +
@@ -211,6 +214,8 @@ void World::restore_state(const std::string& bytes, const std::string& what) {
 
   // everything read and checked: take it over
   if (!integrator_->set_history(history)) r.fail("the integrator history does not fit this integrator");
+  if (reference_ ? !reference_->restore_state(reference_state) : !reference_state.empty())
+    r.fail("the reference's state does not fit this scene's reference");
   for (std::size_t k = 0; k < stage_states.size(); ++k)
     if (!pipeline_->stages()[k]->restore_state(stage_states[k]))
       r.fail("the state of stage '" + std::string(pipeline_->stages()[k]->name()) + "' does not fit");
