@@ -147,6 +147,10 @@ int run_gui(const GuiOptions& o) {
   if (o.tree_probe >= 0) state.set_tree_probe(o.tree_probe);
   if (!o.compare_sets.empty()) state.set_compare(o.compare_sets);
   if (o.inspect >= 0) state.inspect(o.inspect);
+  if (!o.load_state.empty() && !state.load_state(o.load_state)) {
+    std::fprintf(stderr, "sph-gui: %s\n", state.message.c_str());
+    return kInvalidScene;
+  }
   state.view.panels = split_overrides(o.panels);
   if (!o.record.empty()) {  // the stepper already records; open the directory
     state.record_dir = o.record;

@@ -28,6 +28,8 @@ int parse_options(int argc, char** argv, GuiOptions* out) {
   app.add_option("--view-fps", o.view_fps, "draw new snapshots at most this often (and in at most a third of the time), 0 = no limit")
       ->check(CLI::NonNegativeNumber)->capture_default_str();
   app.add_flag("--paused", o.paused, "start paused");
+  app.add_option("--load-state", o.load_state,
+                 "start from the state in this checkpoint (saved by the State panel, or OUT/checkpoint.sph of sph run)");
   app.add_option("--tree-probe", o.tree_probe, "start with the Barnes-Hut overlay of this particle (tree-gravity scenes)")
       ->check(CLI::NonNegativeNumber);
   app.add_flag("--always-redraw", o.always_redraw,

@@ -19,6 +19,7 @@ struct GuiOptions {
   bool paused = false;               ///< start paused
   bool always_redraw = false;        ///< draw every frame even when nothing on screen changes (benchmarks)
   std::string record;                ///< start recording PNG frames into this directory
+  std::string load_state;            ///< start from the state in this checkpoint (sph run --checkpoint-every)
   double record_every = 0.01;        ///< simulated time between recorded frames [time units]
   std::string record_size = "1280x720";  ///< recorded frame size WIDTHxHEIGHT
   /// Test hook: FRAME:KEYS taps every key of KEYS (letters, ' ' for Space) at displayed frame FRAME, all

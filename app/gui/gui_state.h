@@ -73,7 +73,8 @@ class GuiState {
   void save_state(const std::string& path);
   /// Replaces the World by the state in checkpoint `path` (saved here or by `sph run`); a file that is
   /// not a readable checkpoint is refused with a message naming it, and the run on screen stays.
-  void load_state(const std::string& path);
+  /// Returns false (and says why in `message`) if the file was refused.
+  bool load_state(const std::string& path);
   std::string state_path = "state.sph";  ///< the state panel's file
   /// The particle inspector shows particle `id` (< 0: closes it).
   void inspect(std::int64_t id);

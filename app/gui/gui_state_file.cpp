@@ -14,7 +14,7 @@ void GuiState::save_state(const std::string& path) {
   stepper_.save_state(path);
 }
 
-void GuiState::load_state(const std::string& path) {
+bool GuiState::load_state(const std::string& path) {
   try {
     const Checkpoint ck = read_checkpoint(path);
     RunConfig cfg = RunConfig::from_json_text(ck.config_json, "checkpoint " + path);
@@ -26,8 +26,10 @@ void GuiState::load_state(const std::string& path) {
     resync_version_ = awaiting_ = stepper_.load_state(path, cfg, ck.world);
     if (cfg.scene) scene_name_ = cfg.scene->name;
     notify("loading state from " + path);
+    return true;
   } catch (const std::exception& e) {
     notify(e.what(), true);
+    return false;
   }
 }
 

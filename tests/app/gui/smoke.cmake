@@ -7,7 +7,8 @@
 #   ab:    an A/B comparison on sod (alpha = 1 against alpha = 0) at t = 0.15 with the inspector open on
 #          particle 410: the screenshot shows both runs and the inspector, the legend both L1 values,
 #          and the inspector's numbers are the engine's (INSPECT_CHECK);
-#   click: a click on a particle's dot opens the inspector on it.
+#   click: a click on a particle's dot opens the inspector on it;
+#   state: a checkpoint of `sph run` loads with --load-state at its step and time; a CSV given instead exits 3.
 file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT})
 
@@ -19,7 +20,25 @@ function(run)
   endif()
 endfunction()
 
-if(MODE STREQUAL "smoke")
+if(MODE STREQUAL "state")
+  run(${CMAKE_COMMAND} -E env OMP_WAIT_POLICY=passive ${SPH} run sod --set scene.n_left=100 --until 0.05
+      --checkpoint-every 0.05 --quiet --out ${OUT}/run)
+  file(STRINGS ${OUT}/run/diagnostics.csv rows)
+  list(GET rows -1 last)
+  string(REGEX MATCH "^[0-9]+" step "${last}")
+  execute_process(COMMAND ${XVFB_RUN} -a ${GUI} --scene sod --paused --load-state ${OUT}/run/checkpoint.sph
+                  --quit-after-frames 40 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err WORKING_DIRECTORY ${OUT})
+  message("${out}${err}")
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "last state: step ${step}, t = 0.05\n")
+    message(FATAL_ERROR "expected the loaded checkpoint's step ${step} at t = 0.05")
+  endif()
+  execute_process(COMMAND ${XVFB_RUN} -a ${GUI} --scene sod --paused --load-state ${OUT}/run/diagnostics.csv
+                  --quit-after-frames 5 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err WORKING_DIRECTORY ${OUT})
+  message("${out}${err}")
+  if(NOT rc EQUAL 3 OR NOT err MATCHES "diagnostics.csv: not a checkpoint")
+    message(FATAL_ERROR "expected exit 3 naming the file that is not a checkpoint")
+  endif()
+elseif(MODE STREQUAL "smoke")
   run(${XVFB_RUN} -a ${GUI} --scene sod --screenshot ${OUT}/shot.png --quit-after-frames 90)
   run(${CHECK} screenshot ${OUT}/shot.png)
 elseif(MODE STREQUAL "keys")
