@@ -15,7 +15,9 @@ std::string checkpoint_path(const std::string& dir) { return dir + "/checkpoint.
 
 std::string options_json(const RunOptions& opt) {
   nlohmann::ordered_json j;
-  j["scene"] = opt.scene;
+  std::error_code ec;  // a scene file by its absolute path: sph resume may run from another directory
+  j["scene"] = std::filesystem::is_regular_file(opt.scene, ec) ? std::filesystem::absolute(opt.scene, ec).string()
+                                                                : opt.scene;
   j["set"] = opt.sets;
   j["until"] = opt.until;
   j["out"] = opt.out;
