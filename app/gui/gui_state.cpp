@@ -125,4 +125,16 @@ void GuiState::notify(std::string text, bool error) {
   message_is_error = error;
 }
 
+bool GuiState::open_file(const std::string& path) {
+  try {
+    load(RunConfig::load(path));
+  } catch (const std::exception& e) {
+    notify(e.what(), true);
+    return false;
+  }
+  notify("loading " + path);
+  if (recent && !recent->add(path) && !recent->error().empty()) notify(recent->error(), true);
+  return true;
+}
+
 }  // namespace sph::gui

@@ -32,6 +32,10 @@ void status_line(GuiState& s, const FrameStats& stats) {
     ImGui::SameLine();
     ImGui::TextColored(ImVec4(1.f, 0.35f, 0.35f, 1.f), "   REC every %g", f->record_every);
   }
+  if (!s.pace_note.empty()) {
+    ImGui::SameLine();
+    ImGui::TextColored(ImVec4(0.55f, 0.8f, 1.f, 1.f), "   %s", s.pace_note.c_str());
+  }
   if (!f->warnings.empty()) {  // what the run tolerated: the newest first kind in full on hover
     ImGui::SameLine();
     const RunWarning& w = f->warnings.front();
