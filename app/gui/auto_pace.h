@@ -1,9 +1,10 @@
 // A slower default play speed for scenes that would reach t_end in under a second of wall time (Sod runs
-// to t = 0.2 in 0.2 s): they are paced to reach it in about 8 s, and the status line says so. Measured
-// on the first 0.25 s of a scene's run at full speed (or on the whole run when it ends sooner, then it
-// replays paced); decided once per scene, so a user's own pace (Run: real time x) is kept.
+// to t = 0.2 in 0.2 s): they are paced to reach it in about 8 s, and the status line says so. The wall
+// time is predicted from the engine's measured steps per second and the steps taken so far (first
+// frame with 20 steps or at t_end); a run that reached t_end at full speed replays from t = 0 paced.
+// Decided once per scene, so a user's own pace (Run: real time x) is kept.
 #pragma once
-#include <chrono>
+#include <cstdint>
 #include <string>
 
 namespace sph::gui {
@@ -25,10 +26,11 @@ class AutoPace {
   bool enabled_;
   std::string scene_;           ///< the scene decided for
   bool decided_ = false;
-  bool watching_ = false;
-  std::chrono::steady_clock::time_point start_;
-  double t0_ = 0.0;
+  bool replay_ = false;         ///< paced: replay the run if it reaches t_end in the World it was paced in
+  std::uint64_t world_ = 0;     ///< that World (StepperFrame::world_serial)
   double paced_ = 0.0;          ///< the real-time factor set here (0: none)
+  std::uint64_t rate_world_ = 0;
+  double rate_ = 0.0;           ///< the engine's last measured steps/s in World rate_world_
 };
 
 }  // namespace sph::gui

@@ -331,6 +331,7 @@ int run_gui(const GuiOptions& o) {
   std::printf("sph-gui: ui: scale %.2f%s, %s, font %.0f px, atlas %d x %d\n", applied.scale,
               applied.high_contrast ? ", high contrast" : "", state.look_text.empty() ? "start font" : state.look_text.c_str(),
               ImGui::GetFontSize(), atlas.TexWidth, atlas.TexHeight);
+  if (!state.pace_note.empty()) std::printf("sph-gui: pace: %s\n", state.pace_note.c_str());
   report_lesson(state);
   return rc;
 }

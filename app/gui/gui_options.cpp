@@ -13,7 +13,8 @@ int parse_options(int argc, char** argv, GuiOptions* out) {
   GuiOptions& o = *out;
   CLI::App app{"sph-gui: the SPH sandbox on the desktop. The engine steps on its own thread; change the\n"
                "parameters while it runs, colour by any field, compare with the exact solution.\n"
-               "Exit codes: 0 ok, 1 no display or GL 3.3, 2 usage error, 3 invalid scene, 4 I/O error."};
+               "Exit codes: 0 ok, 1 no display or GL 3.3, 2 usage error, 3 invalid scene, 4 I/O error,\n"
+               "6 malformed lesson file (--lesson)."};
   std::string size;
   app.add_option("--scene", o.scene, "built-in scene name (see `sph list`) or JSON scene file")->capture_default_str();
   app.add_option("--set", o.sets, "override a parameter: key=value (repeatable), e.g. scene.count=100000");

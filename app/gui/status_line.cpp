@@ -22,6 +22,10 @@ void status_line(GuiState& s, const FrameStats& stats) {
                                      : ImVec4(1.f, 0.8f, 0.35f, 1.f);
   ImGui::TextColored(colour, "%-8s", state);
   ImGui::SameLine();
+  if (!s.pace_note.empty()) {  // first: a projector's status line is cut at the right
+    ImGui::TextColored(ImVec4(0.55f, 0.8f, 1.f, 1.f), "%s  |", s.pace_note.c_str());
+    ImGui::SameLine();
+  }
   const Snapshot& snap = f->snapshot;
   ImGui::Text("t = %.5g   dt = %.3g   step %lld   |   %.4g steps/s   %.3g particle-steps/s   |   N = %zu   "
               "<neighbours> %.1f   h-iterations %.2f (max %d)   |   display %.0f fps (%.0f drawn)",
@@ -31,10 +35,6 @@ void status_line(GuiState& s, const FrameStats& stats) {
   if (f->record_every > 0.0) {
     ImGui::SameLine();
     ImGui::TextColored(ImVec4(1.f, 0.35f, 0.35f, 1.f), "   REC every %g", f->record_every);
-  }
-  if (!s.pace_note.empty()) {
-    ImGui::SameLine();
-    ImGui::TextColored(ImVec4(0.55f, 0.8f, 1.f, 1.f), "   %s", s.pace_note.c_str());
   }
   if (!f->warnings.empty()) {  // what the run tolerated: the newest first kind in full on hover
     ImGui::SameLine();

@@ -50,11 +50,6 @@ std::string ui_font_path() {
   return env && *env ? env : "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 }
 
-float step_ui_scale(float scale, int steps) {
-  const float s = std::round((scale + static_cast<float>(steps) * kUiScaleStep) / kUiScaleStep) * kUiScaleStep;
-  return std::clamp(s, kUiScaleMin, kUiScaleMax);
-}
-
 std::string apply_ui_look(const UiLook& look, bool gl_ready, bool* fallback) {
   ImGuiIO& io = ImGui::GetIO();
   const float px = std::round(kUiFontPx * look.scale);

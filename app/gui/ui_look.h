@@ -2,6 +2,8 @@
 // size (DejaVu Sans through ImGui's font atlas, rebuilt when the scale changes: crisp, not an upscaled
 // bitmap) and ImGui's style sizes scaled with it; and a high-contrast theme.
 #pragma once
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace sph::gui {
@@ -25,7 +27,11 @@ std::string ui_font_path();
 /// is used instead (the text says so).
 std::string apply_ui_look(const UiLook& look, bool gl_ready, bool* fallback);
 
-/// The scale after a Ctrl+= (+1 step) or Ctrl+- (-1 step) press, clamped to [kUiScaleMin, kUiScaleMax].
-float step_ui_scale(float scale, int steps);
+/// The scale after `steps` Ctrl+= (+1 each) or Ctrl+- (-1 each) presses, on the grid of kUiScaleStep and
+/// clamped to [kUiScaleMin, kUiScaleMax] (steps = 0: a slider's value put on the grid).
+inline float step_ui_scale(float scale, int steps) {
+  const float s = std::round((scale + static_cast<float>(steps) * kUiScaleStep) / kUiScaleStep) * kUiScaleStep;
+  return std::clamp(s, kUiScaleMin, kUiScaleMax);
+}
 
 }  // namespace sph::gui
