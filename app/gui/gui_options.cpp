@@ -46,7 +46,8 @@ int parse_options(int argc, char** argv, GuiOptions* out) {
   app.add_option("--click-particle", o.click_particles,
                  "test hook: FRAME:ID clicks particle ID's dot in the view at displayed frame FRAME (repeatable)");
   app.add_option("--tap-keys", o.tap_keys,
-                 "test hook: FRAME:KEYS taps each key of KEYS (S, R, ' ' ...) at displayed frame FRAME (repeatable)");
+                 "test hook: FRAME:KEYS taps each key of KEYS (S, R, ' ' ...; + and - are Ctrl+= and Ctrl+-) at displayed "
+                 "frame FRAME (repeatable)");
   app.add_option("--lesson", o.lesson, "open this lesson file (assets/lessons/*.json) in the Lesson panel");
   app.add_option("--lesson-step", o.lesson_step, "the lesson's step shown first (1-based)")->check(CLI::PositiveNumber);
   app.add_flag("--lesson-check", o.lesson_check, "run that step's check at once (its result is printed at exit)");
