@@ -263,8 +263,9 @@ int run_gui(const GuiOptions& o) {
     draw_panels(state, L, stats);
     if (!io.WantTextInput && std::count(state.key_presses.begin(), state.key_presses.end(), GLFW_KEY_F12))
       state.requests.screenshot = true;
-    if (f) view.interact(to_framebuffer(L.view), f->snapshot, &state.view);
-    if (f) pick_particles(state, view, to_framebuffer(L.view));
+    const StepperFrame* shown = state.shown_frame();  // a stored frame while scrubbing
+    if (shown) view.interact(to_framebuffer(L.view), shown->snapshot, &state.view);
+    if (shown) pick_particles(state, view, to_framebuffer(L.view));
     if (!f || state.building()) {  // World construction can take seconds (10^5 particles)
       const std::string text = "building " + state.scene_name() + " ...";
       ImGui::GetBackgroundDrawList()->AddText(ImVec2(L.view.x + 20.f, L.view.y + L.view.h - 2.f * ImGui::GetFontSize()),
@@ -280,16 +281,16 @@ int run_gui(const GuiOptions& o) {
     last_view_rect = view_rect;
     const std::uint64_t ui = draw_data_hash(*ImGui::GetDrawData());
     const bool last = (o.quit_after_frames > 0 && stats.frames() + 1 >= o.quit_after_frames) || end_shown;
-    const render::FrameScene scene = f ? view_scene(*f) : render::FrameScene{};
+    const render::FrameScene scene = shown ? view_scene(*shown) : render::FrameScene{};
     const bool draw = o.always_redraw || stats.frames() < 2 || ui != last_ui || fw != last_fw || fh != last_fh ||
-                      window->take_damage() || (f && view.stale(f->serial, state.view, scene.highlight, view_rect)) ||
+                      window->take_damage() || (shown && view.stale(shown->serial, state.view, scene.highlight, view_rect)) ||
                       state.requests.screenshot || (last && !o.screenshot.empty());
     if (draw) {
       glViewport(0, 0, fw, fh);
       const ImVec4 bg = ImGui::GetStyle().Colors[ImGuiCol_WindowBg];
       glClearColor(bg.x, bg.y, bg.z, 1.f);  // the panels' background (they draw none themselves)
       glClear(GL_COLOR_BUFFER_BIT);
-      if (f) view.draw(scene, f->serial, state.view, view_rect, fh);
+      if (shown) view.draw(scene, shown->serial, state.view, view_rect, fh);
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     }
     last_ui = ui;
@@ -312,9 +313,12 @@ int run_gui(const GuiOptions& o) {
     stats.frame_done(draw);
 
     if (last) break;
-    end_shown = o.quit_at_end && f && f->at_end && !state.building() &&
+    if (o.scrub_back > 0 && f && f->at_end && !state.building() && state.scrub < 0 &&
+        state.ring.size() > static_cast<std::size_t>(o.scrub_back))
+      state.scrub = static_cast<int>(state.ring.size()) - 1 - o.scrub_back;  // test hook: look back
+    end_shown = o.quit_at_end && f && f->at_end && !state.building() && (o.scrub_back == 0 || state.scrub >= 0) &&
                 (o.compare_sets.empty() || f->comparing) && (state.inspect_id < 0 || (f->inspection &&
-                f->inspection->step == f->snapshot.step)) && !view.stale(f->serial, state.view, scene.highlight, view_rect);
+                f->inspection->step == f->snapshot.step)) && !view.stale(shown->serial, state.view, scene.highlight, view_rect);
   }
 
   const StepperFrame* f = state.frame();
@@ -327,6 +331,9 @@ int run_gui(const GuiOptions& o) {
   if (recorder.frames() > 0) std::printf("sph-gui: %d frames in %s/\n", recorder.frames(), recorder.dir().c_str());
   if (f) std::printf("sph-gui: last state: step %lld, t = %.9g\n", static_cast<long long>(f->snapshot.step), f->snapshot.t);
   if (f) report_view(view, *f);
+  if (const StepperFrame* shown = state.shown_frame(); shown && shown != f)
+    std::printf("sph-gui: view shows stored frame %d of %zu: step %lld, t = %.9g\n", state.scrub + 1, state.ring.size(),
+                static_cast<long long>(shown->snapshot.step), shown->snapshot.t);
   const ImFontAtlas& atlas = *ImGui::GetIO().Fonts;
   std::printf("sph-gui: ui: scale %.2f%s, %s, font %.0f px, atlas %d x %d\n", applied.scale,
               applied.high_contrast ? ", high contrast" : "", state.look_text.empty() ? "start font" : state.look_text.c_str(),

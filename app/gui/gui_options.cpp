@@ -58,6 +58,8 @@ int parse_options(int argc, char** argv, GuiOptions* out) {
   app.add_option("--auto-pace", pace, "on: slow a scene that would reach t_end in under 1 s of wall time to about 8 s "
                                       "(default: on unless the run is scripted); off: never")
       ->check(CLI::IsMember({"on", "off"}));
+  app.add_option("--scrub-back", o.scrub_back, "test hook: once at t_end, scrub the view back this many stored frames")
+      ->check(CLI::NonNegativeNumber);
   app.add_option("--config-dir", o.config_dir, "folder of recent.json (default $XDG_CONFIG_HOME/sph-sandbox or "
                                                "~/.config/sph-sandbox)");
   try {

@@ -42,6 +42,7 @@ struct GuiOptions {
   /// Slow scenes that would reach t_end in under a second of wall time to about 8 s: -1 = unless the run
   /// is scripted (--quit-after-frames, --quit-at-end, --record, --screenshot, --tap-keys), 0 off, 1 on.
   int auto_pace = -1;
+  int scrub_back = 0;                ///< test hook: at t_end, the view shows the frame this many back (scrub)
   std::string config_dir;            ///< where recent.json lives (default $XDG_CONFIG_HOME/sph-sandbox)
 };
 

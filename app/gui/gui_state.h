@@ -10,6 +10,7 @@
 #include "sph/config.h"
 #include "lesson_ui.h"
 #include "recent_files.h"
+#include "snapshot_ring.h"
 #include "ui_look.h"
 #include "sph/stepper.h"
 #include "view_settings.h"
@@ -41,6 +42,10 @@ class GuiState {
   void update();
   /// The frame shown this display frame (nullptr until the first World is built).
   const StepperFrame* frame() const { return frame_; }
+  /// The frame the particle view draws: a stored one while scrubbing (view-only), else frame().
+  const StepperFrame* shown_frame() const;
+  SnapshotRing ring;               ///< the last frames shown, for pause and scrub
+  int scrub = -1;                  ///< index into ring shown by the view; -1: the live frame
   /// The frame is new this display frame (its serial changed).
   bool fresh() const { return fresh_; }
   /// A load or reset has been sent and its World is not built yet.

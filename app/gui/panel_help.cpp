@@ -22,6 +22,7 @@ constexpr const char* kKeys[][2] = {
     {"Ctrl+=, Ctrl+-", "projector mode: scale every panel's text and widgets (1x-3x)"},
     {"Ctrl+0", "UI scale back to 1x"},
     {"Page Down / Page Up", "next / previous lesson step (Lesson panel)"},
+    {"Left / Right (paused)", "scrub back / forward through the last 240 frames (view only)"},
     {"left drag (2D)", "pan the view"},
     {"left drag (3D)", "orbit the camera"},
     {"mouse wheel", "zoom the view"},

@@ -45,7 +45,7 @@ void show_lesson_step(GuiState& s, int step) {
 void check_lesson_step(GuiState& s) {
   LessonUi& L = s.lesson;
   if (!L.lesson) return;
-  if (L.job && L.job_step == L.step && L.job->poll()) return;  // this step's check is running
+  if (L.job && L.job->poll()) return;  // a check is running (replacing it would wait for it)
   L.job = std::make_shared<LessonJob>(L.lesson->steps[static_cast<std::size_t>(L.step)]);
   L.job_step = L.step;
 }
@@ -91,14 +91,16 @@ void panel_lesson(GuiState& s) {
   ImGui::SameLine();
   if (ImGui::Button("Load again")) show_lesson_step(s, L.step);
   ImGui::SameLine();
-  const bool running = L.job && L.job_step == L.step && L.job->poll();
+  const bool running = L.job && L.job->poll();
   ImGui::BeginDisabled(running);
   if (ImGui::Button("Check")) check_lesson_step(s);
   ImGui::EndDisabled();
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
     ImGui::SetTooltip("Run the claim headless, beside the engine (what `sph lesson check` does for this step)");
 
-  if (!L.job || L.job_step != L.step) return;
+  if (!L.job) return;
+  if (running && L.job_step != L.step) ImGui::TextColored(ImVec4(1.f, 0.8f, 0.35f, 1.f), "checking step %d ...", L.job_step + 1);
+  if (L.job_step != L.step) return;
   ImGui::PushTextWrapPos(0.f);
   if (running) {
     ImGui::TextColored(ImVec4(1.f, 0.8f, 0.35f, 1.f), "checking ...");
