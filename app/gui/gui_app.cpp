@@ -10,11 +10,15 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <thread>
 
+#include "auto_pace.h"
 #include "draw_data_hash.h"
+#include "lesson_job.h"
 #include "engine_rate.h"
 #include "frame_stats.h"
 #include "gui_state.h"
@@ -30,12 +34,13 @@
 #include "view_picking.h"
 #include "view_scene.h"
 #include "view_target.h"
+#include "ui_look.h"
 #include "window.h"
 
 namespace sph::gui {
 namespace {
 
-constexpr int kOk = 0, kNoDisplay = 1, kInvalidScene = 3, kIoError = 4;  // as the headless `sph`
+constexpr int kOk = 0, kNoDisplay = 1, kInvalidScene = 3, kIoError = 4, kBadLesson = 6;  // as the headless `sph`
 
 RunConfig resolve(const GuiOptions& o) {
   RunConfig cfg = RunConfig::load(o.scene);
@@ -112,6 +117,53 @@ void report_view(const ParticleView& view, const StepperFrame& f) {
     std::printf("sph-gui: term %s: a_x = %.17g, du/dt = %.17g\n", t.name.c_str(), t.a.x, t.dudt);
 }
 
+/// Ctrl+= / Ctrl+- (and the keypad's + and -) step the UI scale, Ctrl+0 resets it.
+void scale_keys(GuiState& s, const std::vector<int>& ctrl_presses) {
+  for (int key : ctrl_presses) {
+    if (key == GLFW_KEY_EQUAL || key == GLFW_KEY_KP_ADD) s.look.scale = step_ui_scale(s.look.scale, 1);
+    if (key == GLFW_KEY_MINUS || key == GLFW_KEY_KP_SUBTRACT) s.look.scale = step_ui_scale(s.look.scale, -1);
+    if (key == GLFW_KEY_0 || key == GLFW_KEY_KP_0) s.look.scale = kUiScaleMin;
+  }
+}
+
+/// Applies the look the panels or keys asked for (between frames: the font atlas is rebuilt); the plot's
+/// own text follows the scale unless its size was chosen.
+void apply_look(GuiState& s, UiLook* applied) {
+  if (s.look == *applied) return;
+  bool fallback = false;
+  s.look_text = apply_ui_look(s.look, true, &fallback);
+  if (s.look.scale != applied->scale && (s.view.text_scale == 0 || s.view.text_scale == static_cast<int>(std::lround(applied->scale))))
+    s.view.text_scale = s.look.scale > 1.f ? static_cast<int>(std::lround(s.look.scale)) : 0;
+  char b[64];
+  std::snprintf(b, sizeof b, "UI scale %.2fx%s: ", s.look.scale, s.look.high_contrast ? ", high contrast" : "");
+  s.notify(b + s.look_text, fallback);
+  *applied = s.look;
+}
+
+/// --lesson FILE [--lesson-step N] [--lesson-check]: the lesson panel on that step; false if malformed.
+bool start_lesson(const GuiOptions& o, GuiState& s) {
+  if (o.lesson.empty()) return true;
+  if (!open_lesson(s, o.lesson, o.lesson_step - 1)) {
+    std::fprintf(stderr, "sph-gui: --lesson: %s\n", s.lesson.error.c_str());
+    return false;
+  }
+  if (o.lesson_check) check_lesson_step(s);
+  return true;
+}
+
+/// The lesson step's check at exit (waits for it): for scripted checks of the panel.
+void report_lesson(GuiState& s) {
+  LessonUi& L = s.lesson;
+  if (!L.lesson || !L.job) return;
+  L.job->wait();
+  const int n = static_cast<int>(L.lesson->steps.size());
+  if (!L.job->error().empty())
+    std::printf("sph-gui: lesson step %d/%d: error: %s\n", L.job_step + 1, n, L.job->error().c_str());
+  else if (L.job->result())
+    std::printf("sph-gui: lesson step %d/%d: %s: %s\n", L.job_step + 1, n, L.job->result()->pass ? "true" : "FALSE",
+                L.job->result()->text.c_str());
+}
+
 }  // namespace
 
 int run_gui(const GuiOptions& o) {
@@ -152,6 +204,17 @@ int run_gui(const GuiOptions& o) {
     return kInvalidScene;
   }
   state.view.panels = split_overrides(o.panels);
+  state.recent = std::make_shared<RecentFiles>(o.config_dir);
+  if (!state.recent->error().empty()) state.notify(state.recent->error(), true);
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(o.scene, ec)) state.recent->add(o.scene);  // a scene file opened
+  if (!start_lesson(o, state)) return kBadLesson;
+  UiLook applied;  // the window starts at scale 1, the dark theme
+  state.look = UiLook{o.ui_scale, o.high_contrast};
+  if (window->font_fallback()) state.notify("font " + ui_font_path() + " not found: ImGui's built-in font", true);
+  const bool scripted = o.quit_after_frames > 0 || o.quit_at_end || !o.record.empty() || !o.screenshot.empty() ||
+                        !o.tap_keys.empty();
+  AutoPace pace(o.auto_pace == 1 || (o.auto_pace < 0 && !scripted));
   if (!o.record.empty()) {  // the stepper already records; open the directory
     state.record_dir = o.record;
     state.record_every = o.record_every;
@@ -173,10 +236,17 @@ int run_gui(const GuiOptions& o) {
     for (const std::string& t : o.tap_keys) {  // test hook: taps through the key callback
       const auto colon = t.find(':');
       if (std::stoll(t.substr(0, colon)) != stats.frames()) continue;
-      for (const char ch : t.substr(colon + 1)) window->tap_key(ch == ' ' ? GLFW_KEY_SPACE : std::toupper(ch));
+      for (const char ch : t.substr(colon + 1)) {
+        if (ch == '+' || ch == '-') window->tap_key(ch == '+' ? GLFW_KEY_EQUAL : GLFW_KEY_MINUS, GLFW_MOD_CONTROL);
+        else window->tap_key(ch == ' ' ? GLFW_KEY_SPACE : std::toupper(ch));
+      }
     }
     state.key_presses = window->take_key_presses();
+    scale_keys(state, window->take_ctrl_presses());
+    apply_look(state, &applied);
     state.update();
+    pace.see(state);
+    state.pace_note = pace.note(state);
     const StepperFrame* f = state.frame();
     if (f) engine_rate.see(*f);
     if (f && state.fresh() && f->record_index >= 0 && recorder.active() &&
@@ -197,8 +267,9 @@ int run_gui(const GuiOptions& o) {
     draw_panels(state, L, stats);
     if (!io.WantTextInput && std::count(state.key_presses.begin(), state.key_presses.end(), GLFW_KEY_F12))
       state.requests.screenshot = true;
-    if (f) view.interact(to_framebuffer(L.view), f->snapshot, &state.view);
-    if (f) pick_particles(state, view, to_framebuffer(L.view));
+    const StepperFrame* shown = state.shown_frame();  // a stored frame while scrubbing
+    if (shown) view.interact(to_framebuffer(L.view), shown->snapshot, &state.view);
+    if (shown) pick_particles(state, view, to_framebuffer(L.view));
     if (!f || state.building()) {  // World construction can take seconds (10^5 particles)
       const std::string text = "building " + state.scene_name() + " ...";
       ImGui::GetBackgroundDrawList()->AddText(ImVec2(L.view.x + 20.f, L.view.y + L.view.h - 2.f * ImGui::GetFontSize()),
@@ -214,15 +285,16 @@ int run_gui(const GuiOptions& o) {
     last_view_rect = view_rect;
     const std::uint64_t ui = draw_data_hash(*ImGui::GetDrawData());
     const bool last = (o.quit_after_frames > 0 && stats.frames() + 1 >= o.quit_after_frames) || end_shown;
-    const render::FrameScene scene = f ? view_scene(*f) : render::FrameScene{};
+    const render::FrameScene scene = shown ? view_scene(*shown) : render::FrameScene{};
     const bool draw = o.always_redraw || stats.frames() < 2 || ui != last_ui || fw != last_fw || fh != last_fh ||
-                      window->take_damage() || (f && view.stale(f->serial, state.view, scene.highlight, view_rect)) ||
+                      window->take_damage() || (shown && view.stale(shown->serial, state.view, scene.highlight, view_rect)) ||
                       state.requests.screenshot || (last && !o.screenshot.empty());
     if (draw) {
       glViewport(0, 0, fw, fh);
-      glClearColor(0.09f, 0.09f, 0.10f, 1.f);  // the panels' background (they draw none themselves)
+      const ImVec4 bg = ImGui::GetStyle().Colors[ImGuiCol_WindowBg];
+      glClearColor(bg.x, bg.y, bg.z, 1.f);  // the panels' background (they draw none themselves)
       glClear(GL_COLOR_BUFFER_BIT);
-      if (f) view.draw(scene, f->serial, state.view, view_rect, fh);
+      if (shown) view.draw(scene, shown->serial, state.view, view_rect, fh);
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     }
     last_ui = ui;
@@ -245,9 +317,12 @@ int run_gui(const GuiOptions& o) {
     stats.frame_done(draw);
 
     if (last) break;
-    end_shown = o.quit_at_end && f && f->at_end && !state.building() &&
+    if (o.scrub_back > 0 && f && f->at_end && !state.building() && state.scrub < 0 &&
+        state.ring.size() > static_cast<std::size_t>(o.scrub_back))
+      state.scrub = static_cast<int>(state.ring.size()) - 1 - o.scrub_back;  // test hook: look back
+    end_shown = o.quit_at_end && f && f->at_end && !state.building() && (o.scrub_back == 0 || state.scrub >= 0) &&
                 (o.compare_sets.empty() || f->comparing) && (state.inspect_id < 0 || (f->inspection &&
-                f->inspection->step == f->snapshot.step)) && !view.stale(f->serial, state.view, scene.highlight, view_rect);
+                f->inspection->step == f->snapshot.step)) && !view.stale(shown->serial, state.view, scene.highlight, view_rect);
   }
 
   const StepperFrame* f = state.frame();
@@ -260,6 +335,15 @@ int run_gui(const GuiOptions& o) {
   if (recorder.frames() > 0) std::printf("sph-gui: %d frames in %s/\n", recorder.frames(), recorder.dir().c_str());
   if (f) std::printf("sph-gui: last state: step %lld, t = %.9g\n", static_cast<long long>(f->snapshot.step), f->snapshot.t);
   if (f) report_view(view, *f);
+  if (const StepperFrame* shown = state.shown_frame(); shown && shown != f)
+    std::printf("sph-gui: view shows stored frame %d of %zu: step %lld, t = %.9g\n", state.scrub + 1, state.ring.size(),
+                static_cast<long long>(shown->snapshot.step), shown->snapshot.t);
+  const ImFontAtlas& atlas = *ImGui::GetIO().Fonts;
+  std::printf("sph-gui: ui: scale %.2f%s, %s, font %.0f px, atlas %d x %d\n", applied.scale,
+              applied.high_contrast ? ", high contrast" : "", state.look_text.empty() ? "start font" : state.look_text.c_str(),
+              ImGui::GetFontSize(), atlas.TexWidth, atlas.TexHeight);
+  if (!state.pace_note.empty()) std::printf("sph-gui: pace: %s\n", state.pace_note.c_str());
+  report_lesson(state);
   return rc;
 }
 

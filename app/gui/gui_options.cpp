@@ -13,7 +13,8 @@ int parse_options(int argc, char** argv, GuiOptions* out) {
   GuiOptions& o = *out;
   CLI::App app{"sph-gui: the SPH sandbox on the desktop. The engine steps on its own thread; change the\n"
                "parameters while it runs, colour by any field, compare with the exact solution.\n"
-               "Exit codes: 0 ok, 1 no display or GL 3.3, 2 usage error, 3 invalid scene, 4 I/O error."};
+               "Exit codes: 0 ok, 1 no display or GL 3.3, 2 usage error, 3 invalid scene, 4 I/O error,\n"
+               "6 malformed lesson file (--lesson)."};
   std::string size;
   app.add_option("--scene", o.scene, "built-in scene name (see `sph list`) or JSON scene file")->capture_default_str();
   app.add_option("--set", o.sets, "override a parameter: key=value (repeatable), e.g. scene.count=100000");
@@ -47,7 +48,22 @@ int parse_options(int argc, char** argv, GuiOptions* out) {
   app.add_option("--click-particle", o.click_particles,
                  "test hook: FRAME:ID clicks particle ID's dot in the view at displayed frame FRAME (repeatable)");
   app.add_option("--tap-keys", o.tap_keys,
-                 "test hook: FRAME:KEYS taps each key of KEYS (S, R, ' ' ...) at displayed frame FRAME (repeatable)");
+                 "test hook: FRAME:KEYS taps each key of KEYS (S, R, ' ' ...; + and - are Ctrl+= and Ctrl+-) at displayed "
+                 "frame FRAME (repeatable)");
+  app.add_option("--lesson", o.lesson, "open this lesson file (assets/lessons/*.json) in the Lesson panel");
+  app.add_option("--lesson-step", o.lesson_step, "the lesson's step shown first (1-based)")->check(CLI::PositiveNumber);
+  app.add_flag("--lesson-check", o.lesson_check, "run that step's check at once (its result is printed at exit)");
+  app.add_option("--ui-scale", o.ui_scale, "projector mode: text and widgets at this scale, 1-3 (Ctrl+= / Ctrl+-)")
+      ->check(CLI::Range(1.0, 3.0));
+  app.add_flag("--high-contrast", o.high_contrast, "the high-contrast theme");
+  std::string pace;
+  app.add_option("--auto-pace", pace, "on: slow a scene that would reach t_end in under 1 s of wall time to about 8 s "
+                                      "(default: on unless the run is scripted); off: never")
+      ->check(CLI::IsMember({"on", "off"}));
+  app.add_option("--scrub-back", o.scrub_back, "test hook: once at t_end, scrub the view back this many stored frames")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--config-dir", o.config_dir, "folder of recent.json (default $XDG_CONFIG_HOME/sph-sandbox or "
+                                               "~/.config/sph-sandbox)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -56,6 +72,7 @@ int parse_options(int argc, char** argv, GuiOptions* out) {
     app.exit(e);
     return 2;
   }
+  if (!pace.empty()) o.auto_pace = pace == "on" ? 1 : 0;
   if (!size.empty() && !parse_size(size, &o.width, &o.height)) {
     std::fprintf(stderr, "sph-gui: --size %s: expected WIDTHxHEIGHT, e.g. 1600x900\n", size.c_str());
     return 2;

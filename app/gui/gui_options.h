@@ -35,6 +35,16 @@ struct GuiOptions {
   /// Test hook: FRAME:ID presses the left mouse button on particle ID's dot at displayed frame FRAME and
   /// releases it at the next (a click through the view's picking, as a user's).
   std::vector<std::string> click_particles;
+  std::string lesson;                ///< open this lesson file (assets/lessons/*.json)
+  int lesson_step = 1;               ///< on this step (1-based)
+  bool lesson_check = false;         ///< run the step's check at once; its result is printed at exit
+  float ui_scale = 1.f;              ///< projector mode: text and widgets at this scale (1-3)
+  bool high_contrast = false;        ///< the high-contrast theme
+  /// Slow scenes that would reach t_end in under a second of wall time to about 8 s: -1 = unless the run
+  /// is scripted (--quit-after-frames, --quit-at-end, --record, --screenshot, --tap-keys), 0 off, 1 on.
+  int auto_pace = -1;
+  int scrub_back = 0;                ///< test hook: at t_end, the view shows the frame this many back (scrub)
+  std::string config_dir;            ///< where recent.json lives (default $XDG_CONFIG_HOME/sph-sandbox)
 };
 
 /// Parses argv. Returns -1 to go on, or the exit code (0 after --help, 2 on a usage error).

@@ -36,12 +36,20 @@ void GuiState::update() {
   } else if (f->world_serial != world_serial_) {
     values = f->config.values;  // a rebuild we did not start from here
   }
+  ring.push(*f);                       // pause and scrub (snapshot_ring.h)
+  if (f->running) scrub = -1;          // playing shows the live run
   if (f->world_serial != world_serial_) {
     world_serial_ = f->world_serial;
+    scrub = -1;
     // Colour by a field this scene has (the renderer would fall back anyway, with a warning).
     if (f->snapshot.find(view.color_by) == nullptr && !f->snapshot.fields.empty())
       view.color_by = f->snapshot.find("rho") ? "rho" : f->snapshot.fields.front().name;
   }
+}
+
+const StepperFrame* GuiState::shown_frame() const {
+  if (scrub >= 0 && static_cast<std::size_t>(scrub) < ring.size()) return &ring.at(static_cast<std::size_t>(scrub));
+  return frame_;
 }
 
 void GuiState::resync_from(const StepperFrame& f) {
@@ -127,6 +135,18 @@ void GuiState::inspect(std::int64_t id) {
 void GuiState::notify(std::string text, bool error) {
   message = std::move(text);
   message_is_error = error;
+}
+
+bool GuiState::open_file(const std::string& path) {
+  try {
+    load(RunConfig::load(path));
+  } catch (const std::exception& e) {
+    notify(e.what(), true);
+    return false;
+  }
+  notify("loading " + path);
+  if (recent && !recent->add(path) && !recent->error().empty()) notify(recent->error(), true);
+  return true;
 }
 
 }  // namespace sph::gui

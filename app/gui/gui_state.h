@@ -8,6 +8,10 @@
 #include <vector>
 
 #include "sph/config.h"
+#include "lesson_ui.h"
+#include "recent_files.h"
+#include "snapshot_ring.h"
+#include "ui_look.h"
 #include "sph/stepper.h"
 #include "view_settings.h"
 
@@ -38,6 +42,10 @@ class GuiState {
   void update();
   /// The frame shown this display frame (nullptr until the first World is built).
   const StepperFrame* frame() const { return frame_; }
+  /// The frame the particle view draws: a stored one while scrubbing (view-only), else frame().
+  const StepperFrame* shown_frame() const;
+  SnapshotRing ring;               ///< the last frames shown, for pause and scrub
+  int scrub = -1;                  ///< index into ring shown by the view; -1: the live frame
   /// The frame is new this display frame (its serial changed).
   bool fresh() const { return fresh_; }
   /// A load or reset has been sent and its World is not built yet.
@@ -84,6 +92,13 @@ class GuiState {
   bool stop_at_end = true;         ///< as last sent
   std::int64_t tree_probe = -1;    ///< as last sent (-1: no tree overlay)
   ConvergeUi converge;             ///< the convergence study panel
+  LessonUi lesson;                 ///< the lesson panel
+  UiLook look;                     ///< projector mode: asked for (the main loop applies it between frames)
+  std::string look_text;           ///< what the last applied look loaded ("DejaVuSans.ttf at 32 px")
+  std::string pace_note;           ///< the status line's note on an automatic pace (auto_pace.h)
+  std::shared_ptr<RecentFiles> recent;  ///< scene files opened, newest first
+  /// Loads a scene file (JSON or HDF5) and puts it first in the recent files; false with a notice.
+  bool open_file(const std::string& path);
   int tree_probe_pick = 0;         ///< the particle the overlay shows when switched on
 
   // --- view and user requests --------------------------------------------------------------------------

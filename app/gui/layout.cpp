@@ -9,7 +9,9 @@ Layout compute_layout(int width, int height, float line_height) {
   const float W = static_cast<float>(width), H = static_cast<float>(height);
   Layout L;
   const float status_h = std::round(line_height + 12.f);
-  const float controls_w = std::round(std::clamp(0.26f * W, 330.f, 430.f));
+  // the column grows with the UI font (projector mode), up to 45% of the window
+  const float k = std::max(1.f, line_height / 16.f);
+  const float controls_w = std::round(std::min(std::clamp(0.26f * W, 330.f * k, 430.f * k), std::max(330.f, 0.45f * W)));
   const float body_h = H - status_h;
   const float right_w = W - controls_w;
   const float view_h = std::round(std::max(0.f, body_h * 0.63f));

@@ -22,7 +22,7 @@ struct Layout {
 /// Gives the particle inspector a column at the right of the view (about 30 lines of text wide).
 void carve_inspector(Layout& L, float line_height);
 
-/// line_height: the UI font's height [px].
+/// line_height: the UI font's height [px] (16 at UI scale 1; the controls column widens with it).
 Layout compute_layout(int width, int height, float line_height);
 
 }  // namespace sph::gui

@@ -172,6 +172,14 @@ void panel_display(GuiState& s) {
     ImGui::TextDisabled(snap.dim == 2 ? "drag: pan, wheel: zoom" : "drag: orbit, wheel: zoom");
   }
   ImGui::SliderInt("text size", &v.text_scale, 0, 4, v.text_scale == 0 ? "auto" : "%d x");
+  // projector mode: the whole UI (ui_look.h), applied by the main loop between frames
+  float scale = s.look.scale;
+  if (ImGui::SliderFloat("UI scale", &scale, kUiScaleMin, kUiScaleMax, "%.2f x")) s.look.scale = step_ui_scale(scale, 0);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Projector mode: every panel's text and widgets at this scale (Ctrl+= / Ctrl+-, Ctrl+0: 1x);\n"
+                      "the font is rasterised at the new size. %s", s.look_text.c_str());
+  ImGui::SameLine();
+  ImGui::Checkbox("high contrast", &s.look.high_contrast);
 }
 
 }  // namespace sph::gui

@@ -1,5 +1,6 @@
-// The help window: the text `sph help SCENE` prints (sph/help_text.h, one source for both programs), for
-// the scene on screen with the parameters and scene values being edited. F1 or H opens and closes it.
+// The help window (F1 or H opens and closes it): every key and mouse action, then the text `sph help SCENE`
+// prints (sph/help_text.h, one source for both programs) for the scene on screen with the parameters and
+// scene values being edited.
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
@@ -9,6 +10,28 @@
 #include "sph/help_text.h"
 
 namespace sph::gui {
+namespace {
+
+/// Every key and mouse action of the window (README "The desktop program").
+constexpr const char* kKeys[][2] = {
+    {"Space", "play / pause (at t_end with 'stop at t_end': replay from t = 0)"},
+    {"S", "one step"},
+    {"R", "reset to t = 0 (applies the edits marked 'reset')"},
+    {"F1, H", "this help"},
+    {"F12", "screenshot of the window (PNG in the working directory)"},
+    {"Ctrl+=, Ctrl+-", "projector mode: scale every panel's text and widgets (1x-3x)"},
+    {"Ctrl+0", "UI scale back to 1x"},
+    {"Page Down / Page Up", "next / previous lesson step (Lesson panel)"},
+    {"Left / Right (paused)", "scrub back / forward through the last 240 frames (view only)"},
+    {"left drag (2D)", "pan the view"},
+    {"left drag (3D)", "orbit the camera"},
+    {"mouse wheel", "zoom the view"},
+    {"left click on a particle", "open the particle inspector on it"},
+    {"hover a particle", "its id and the coloured field's value"},
+    {"hover a widget", "its unit, seed equation and stage"},
+};
+
+}  // namespace
 
 void panel_help(GuiState& s) {
   const bool typing = ImGui::GetIO().WantTextInput;
@@ -31,8 +54,20 @@ void panel_help(GuiState& s) {
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   ImGui::SetNextWindowSize(ImVec2(vp->Size.x * 0.55f, vp->Size.y * 0.75f), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + vp->Size.x * 0.4f, vp->Pos.y + vp->Size.y * 0.1f), ImGuiCond_FirstUseEver);
-  if (ImGui::Begin("Help: the scene, its stages and parameters  (F1)", &h.open, ImGuiWindowFlags_HorizontalScrollbar))
+  if (ImGui::Begin("Help: keys, the scene, its stages and parameters  (F1)", &h.open, ImGuiWindowFlags_HorizontalScrollbar)) {
+    if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
+      for (const auto& k : kKeys) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(k[0]);
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(k[1]);
+      }
+      ImGui::EndTable();
+    }
+    ImGui::Separator();
     ImGui::TextUnformatted(h.text.c_str());
+  }
   ImGui::End();
 }
 

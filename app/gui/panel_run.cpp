@@ -1,7 +1,11 @@
 // Run controls: play/pause, single step, reset (which applies the structural edits), pacing (as fast
-// as possible or a real-time factor), stop at t_end, screenshot and PNG-sequence recording.
+// as possible or a real-time factor), stop at t_end, screenshot and PNG-sequence recording, and the
+// scrub slider over the stored frames while paused.
 #include <imgui.h>
 #include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <cstdio>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -9,6 +13,32 @@
 #include "panels.h"
 
 namespace sph::gui {
+namespace {
+
+/// Pause and scrub: while paused, a slider (and Left / Right) over the stored frames; view-only, Play
+/// returns to the live run.
+void scrub_slider(GuiState& s) {
+  const StepperFrame* f = s.frame();
+  const int n = static_cast<int>(s.ring.size());
+  if (!f || f->running || n < 2) return;
+  int k = s.scrub < 0 ? n - 1 : s.scrub;
+  if (!ImGui::GetIO().WantTextInput)
+    for (int key : s.key_presses) {
+      if (key == GLFW_KEY_LEFT) k = std::max(0, k - 1);
+      if (key == GLFW_KEY_RIGHT) k = std::min(n - 1, k + 1);
+    }
+  const StepperFrame& at = s.ring.at(static_cast<std::size_t>(k));
+  char label[96];
+  std::snprintf(label, sizeof label, "t = %.5g (%d/%d)%s", at.snapshot.t, k + 1, n, k == n - 1 ? " live" : "");
+  ImGui::SetNextItemWidth(-ImGui::GetFontSize() * 4.f);
+  ImGui::SliderInt("scrub", &k, 0, n - 1, label);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("The last %d frames shown (at most %zu): drag or Left / Right to look back; view only.\n"
+                      "Play returns to the live run.", n, SnapshotRing::kMaxFrames);
+  s.scrub = k == n - 1 ? -1 : k;
+}
+
+}  // namespace
 
 void panel_run(GuiState& s) {
   const StepperFrame* f = s.frame();
@@ -45,6 +75,7 @@ void panel_run(GuiState& s) {
     }
   }
 
+  scrub_slider(s);
   bool realtime = s.real_time_factor > 0.0;
   if (ImGui::Checkbox("real time x", &realtime)) s.set_real_time_factor(realtime ? 0.1 : 0.0);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Pace the engine: simulated seconds per wall-clock second.\nOff: as fast as possible.");

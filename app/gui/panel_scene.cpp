@@ -39,16 +39,21 @@ void panel_scene(GuiState& s) {
   const std::string hint = scene_file_hint(s.scene_name());
   ImGui::InputTextWithHint("##file", hint.c_str(), &s.file_path);
   ImGui::SameLine();
-  if (ImGui::Button("Open file") && !s.file_path.empty()) {
-    try {
-      s.load(RunConfig::load(s.file_path));
-      s.notify("loading " + s.file_path);
-    } catch (const std::exception& e) {
-      s.notify(e.what(), true);
-    }
-  }
+  if (ImGui::Button("Open file") && !s.file_path.empty()) s.open_file(s.file_path);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("A JSON scene file: {\"scene\": NAME, \"params\": {key: value, ...}},\n"
                                                 "or an HDF5 initial condition in the SWIFT/GADGET layout (.hdf5)");
+  if (s.recent && !s.recent->files().empty()) {
+    if (ImGui::BeginCombo("recent", "(recent files)")) {
+      const std::vector<std::string> files = s.recent->files();  // a copy: opening one reorders the list
+      for (const std::string& path : files)
+        if (ImGui::Selectable(path.c_str())) {
+          s.file_path = path;
+          s.open_file(path);
+        }
+      ImGui::EndCombo();
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Scene files opened before (kept in %s)", s.recent->file().c_str());
+  }
   if (s.message_is_error && !s.message.empty()) {
     ImGui::PushTextWrapPos(0.f);
     ImGui::TextColored(ImVec4(1.f, 0.45f, 0.45f, 1.f), "%s", s.message.c_str());

@@ -22,6 +22,7 @@ void draw_panels(GuiState& s, const Layout& L, const FrameStats& stats) {
   place(L.controls);
   if (ImGui::Begin("SPH sandbox", nullptr, fixed)) {
     ImGui::PushItemWidth(-ImGui::GetFontSize() * 7.5f);
+    if (ImGui::CollapsingHeader("Lesson", s.lesson.lesson ? ImGuiTreeNodeFlags_DefaultOpen : 0)) panel_lesson(s);
     if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) panel_scene(s);
     if (ImGui::CollapsingHeader("Run", ImGuiTreeNodeFlags_DefaultOpen)) panel_run(s);
     if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) panel_params(s);

@@ -23,6 +23,15 @@ void panel_state(GuiState& s);        ///< save the run's whole state to a check
 void panel_inspector(GuiState& s);    ///< the picked particle: fields, equation terms, neighbours
 void status_line(GuiState& s, const FrameStats& stats);  ///< t, dt, steps/s, neighbours, h-iterations
 void divergence_modal(GuiState& s);   ///< after a NaN/inf: which particle and step, and a reset button
-void panel_help(GuiState& s);         ///< F1 / H: `sph help SCENE` for the scene on screen, in a window
+void panel_help(GuiState& s);         ///< F1 / H: the keys and mouse actions, and `sph help SCENE` for the scene on screen
+void panel_lesson(GuiState& s);       ///< a lesson's steps, previous/next, the step's check in green or red
+
+/// Opens a lesson file on step `step` (0-based, clamped) and loads that step; false (with a notice) if the
+/// file is malformed.
+bool open_lesson(GuiState& s, const std::string& path, int step);
+/// Shows step `step` of the open lesson and loads its scene (and comparison).
+void show_lesson_step(GuiState& s, int step);
+/// Starts the current step's check (unless it is already running).
+void check_lesson_step(GuiState& s);
 
 }  // namespace sph::gui

@@ -22,6 +22,15 @@ void status_line(GuiState& s, const FrameStats& stats) {
                                      : ImVec4(1.f, 0.8f, 0.35f, 1.f);
   ImGui::TextColored(colour, "%-8s", state);
   ImGui::SameLine();
+  if (const StepperFrame* shown = s.shown_frame(); shown != f) {  // scrubbing: which stored frame the view shows
+    ImGui::TextColored(ImVec4(0.55f, 0.8f, 1.f, 1.f), "viewing t = %.5g (%d/%zu, view only)  |", shown->snapshot.t,
+                       s.scrub + 1, s.ring.size());
+    ImGui::SameLine();
+  }
+  if (!s.pace_note.empty()) {  // first: a projector's status line is cut at the right
+    ImGui::TextColored(ImVec4(0.55f, 0.8f, 1.f, 1.f), "%s  |", s.pace_note.c_str());
+    ImGui::SameLine();
+  }
   const Snapshot& snap = f->snapshot;
   ImGui::Text("t = %.5g   dt = %.3g   step %lld   |   %.4g steps/s   %.3g particle-steps/s   |   N = %zu   "
               "<neighbours> %.1f   h-iterations %.2f (max %d)   |   display %.0f fps (%.0f drawn)",

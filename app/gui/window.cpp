@@ -11,31 +11,12 @@
 #include <cstring>
 #include <filesystem>
 
+#include "ui_look.h"
+
 namespace sph::gui {
 namespace {
 
 void glfw_error(int code, const char* text) { std::fprintf(stderr, "sph-gui: GLFW error %d: %s\n", code, text); }
-
-/// A readable UI font for a projector: DejaVu Sans if the system has it, else ImGui's built-in one.
-void load_font() {
-  ImGuiIO& io = ImGui::GetIO();
-  const char* path = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
-  std::error_code ec;
-  if (std::filesystem::exists(path, ec) && io.Fonts->AddFontFromFileTTF(path, 16.f) != nullptr) return;
-  io.Fonts->AddFontDefault();
-}
-
-void style() {
-  ImGui::StyleColorsDark();
-  ImGuiStyle& s = ImGui::GetStyle();
-  // Square corners: rounded ones cost a software rasteriser ~20% of the panels' drawing time.
-  s.WindowRounding = s.ChildRounding = s.PopupRounding = s.FrameRounding = s.GrabRounding = 0.f;
-  s.ScrollbarRounding = s.TabRounding = 0.f;
-  s.WindowBorderSize = 1.f;
-  s.ItemSpacing = ImVec2(8.f, 5.f);
-  s.Colors[ImGuiCol_WindowBg] = ImVec4(0.09f, 0.09f, 0.10f, 1.f);
-
-}
 
 }  // namespace
 
@@ -74,8 +55,7 @@ std::unique_ptr<Window> Window::create(int width, int height, const char* title,
   ImGui::CreateContext();
   w->imgui_ = true;
   ImGui::GetIO().IniFilename = nullptr;  // the layout is computed every frame: nothing to save
-  style();
-  load_font();
+  apply_ui_look(UiLook{}, false, &w->font_fallback_);  // the font atlas and style at scale 1 (ui_look.h)
   w->imgui_glfw_ = ImGui_ImplGlfw_InitForOpenGL(w->window_, true);
   w->imgui_gl_ = w->imgui_glfw_ && ImGui_ImplOpenGL3_Init("#version 330 core");
   if (!w->imgui_gl_) {
@@ -93,9 +73,17 @@ Window::~Window() {
   if (glfw_) glfwTerminate();
 }
 
-void Window::on_key(GLFWwindow* win, int key, int /*scancode*/, int action, int /*mods*/) {
-  if (action == GLFW_PRESS || action == GLFW_REPEAT)
-    static_cast<Window*>(glfwGetWindowUserPointer(win))->presses_.push_back(key);
+void Window::on_key(GLFWwindow* win, int key, int /*scancode*/, int action, int mods) {
+  if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
+  Window* w = static_cast<Window*>(glfwGetWindowUserPointer(win));
+  w->presses_.push_back(key);
+  if (mods & GLFW_MOD_CONTROL) w->ctrl_presses_.push_back(key);
+}
+
+std::vector<int> Window::take_ctrl_presses() {
+  std::vector<int> out;
+  out.swap(ctrl_presses_);
+  return out;
 }
 
 std::vector<int> Window::take_key_presses() {
@@ -104,9 +92,9 @@ std::vector<int> Window::take_key_presses() {
   return out;
 }
 
-void Window::tap_key(int key) {
-  on_key(window_, key, 0, GLFW_PRESS, 0);
-  on_key(window_, key, 0, GLFW_RELEASE, 0);
+void Window::tap_key(int key, int mods) {
+  on_key(window_, key, 0, GLFW_PRESS, mods);
+  on_key(window_, key, 0, GLFW_RELEASE, mods);
 }
 
 bool Window::should_close() const { return glfwWindowShouldClose(window_); }

@@ -30,15 +30,21 @@ class Window {
   /// counts, also one pressed and released between two frames, which polling the key state once per
   /// frame misses. Filled by GLFW's key callback (ImGui's backend chains to it).
   std::vector<int> take_key_presses();
-  /// Test hook: a press and a release of `key`, delivered through the same callback as GLFW's events.
-  void tap_key(int key);
+  /// Keys pressed with Ctrl held since the last call (also in take_key_presses): Ctrl+= / Ctrl+- scale the UI.
+  std::vector<int> take_ctrl_presses();
+  /// Test hook: a press and a release of `key` (with GLFW modifier bits `mods`), delivered through the same
+  /// callback as GLFW's events.
+  void tap_key(int key, int mods = 0);
+  /// The UI font file was missing at start: ImGui's built-in font is used.
+  bool font_fallback() const { return font_fallback_; }
 
  private:
   Window() = default;
   GLFWwindow* window_ = nullptr;
   bool glfw_ = false, imgui_ = false, imgui_glfw_ = false, imgui_gl_ = false;
   bool damaged_ = true;
-  std::vector<int> presses_;
+  bool font_fallback_ = false;
+  std::vector<int> presses_, ctrl_presses_;
   static void on_key(GLFWwindow* win, int key, int scancode, int action, int mods);
 };
 

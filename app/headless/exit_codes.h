@@ -12,6 +12,8 @@ enum ExitCode : int {
   kIoError = 4,       ///< cannot create or write the output
   kDiverged = 5,      ///< NaN/inf, a finite blow-up (energy, timestep), a particle through a wall or a start
                       ///< the h solve cannot reach: the run stopped, nothing of the bad state was written
+  kBadLesson = 6,     ///< `sph lesson`: malformed lesson file (the message names the file and the key)
+  kClaimFalse = 7,    ///< `sph lesson check`: a step's claim is false (the measured numbers are printed)
   kInterrupted = 130, ///< SIGINT (Ctrl-C): the run stopped after a step and wrote a checkpoint (sph resume DIR)
   kTerminated = 143,  ///< SIGTERM: the same
 };

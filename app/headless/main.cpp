@@ -1,5 +1,5 @@
 // sph: the headless program. `sph list`, `sph check SCENE`, `sph run SCENE [...]`, `sph converge SCENE [...]`,
-// `sph bench [SCENE...]`, `sph export-ics SCENE`, `sph help [SCENE]`, `sph params`.
+// `sph bench [SCENE...]`, `sph export-ics SCENE`, `sph help [SCENE]`, `sph params`, `sph lesson show|check FILE`.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
@@ -10,6 +10,7 @@
 #include "cli_export.h"
 #include "cli_help.h"
 #include "cli_resume.h"
+#include "cli_lesson.h"
 #include "cli_run.h"
 #include "cli_suggest.h"
 #include "exit_codes.h"
@@ -23,7 +24,8 @@ int main(int argc, char** argv) {
                "Exit codes: 0 ok, 1 internal error, 2 usage error, 3 invalid scene (unknown scene, malformed\n"
                "file, unknown key, value out of range), 4 I/O error, 5 diverged (NaN/inf in the state, a\n"
                "finite blow-up of the energy or the timestep, a particle through a wall, a start the h solve\n"
-               "cannot reach), 130/143 stopped by SIGINT/SIGTERM after a step with a checkpoint written\n"
+               "cannot reach), 6 malformed lesson file (sph lesson), 7 a lesson's claim is false (sph lesson\n"
+               "check), 130/143 stopped by SIGINT/SIGTERM after a step with a checkpoint written\n"
                "(continue with `sph resume DIR`; a second signal stops at once). 3 also: a checkpoint that is\n"
                "missing, truncated, damaged, of another version or not one. What a run tolerated is listed\n"
                "under \"warnings\" (and in warnings.csv)."};
@@ -128,6 +130,12 @@ int main(int argc, char** argv) {
   help->add_option("scene", help_scene, "built-in scene name, JSON scene file or HDF5 initial condition");
   help->add_option("--set", help_sets, "show the scene with these overrides: key=value (repeatable)");
   app.add_subcommand("params", "every run parameter key with its unit, range, default and stage");
+  LessonOptions lesson_opt;
+  auto* lesson = app.add_subcommand("lesson", "a lesson (assets/lessons/*.json): show prints its steps, check runs every "
+                                              "step's claim headless (exit 6 malformed file, 7 a false claim)");
+  lesson->add_option("action", lesson_opt.action, "show or check")->required()->check(CLI::IsMember({"show", "check"}));
+  lesson->add_option("file", lesson_opt.file, "the lesson's JSON file")->required();
+  lesson->add_option("--threads", lesson_opt.threads, "OpenMP threads")->check(CLI::Range(1, 1024));
   for (CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) sub->allow_extras();
 
   if (report_unknown_command(app, argc, argv)) return kUsage;
@@ -153,6 +161,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("help")) return help_command(help_scene, help_sets);
     if (app.got_subcommand("params")) return params_command();
     if (app.got_subcommand("resume")) return resume_command(resume_dir, resume_threads, resume_until, resume_quiet);
+    if (app.got_subcommand("lesson")) return lesson_command(lesson_opt);
     return run_command(opt);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "sph: internal error: %s\n", e.what());

@@ -6,6 +6,8 @@
 //   gui_image_check ab FILE           - an A/B comparison with the inspector open: the view (top middle)
 //                                       shows dots in both run colours, the inspector column (top right)
 //                                       text and a table.
+//   gui_image_check text_scale A B K   - the status line's text in B is K times as tall as in A (projector
+//                                       mode), within 20%.
 // Prints what it measured; exit code 0 if the checks pass.
 #include <algorithm>
 #include <cmath>
@@ -116,6 +118,33 @@ int ab_screenshot(const char* path) {
   return ok ? 0 : 1;
 }
 
+/// Height of the status line's text [px]: the bottom-most run of consecutive rows, in the left third of
+/// the image, that hold a light text pixel (the status line is the window's last line of text).
+int status_text_height(const Image& im) {
+  int run = 0;
+  for (int y = im.h - 1; y >= im.h - im.h / 10; --y) {
+    bool lit = false;
+    for (int x = 0; x < im.w / 3 && !lit; ++x) {
+      const unsigned char* p = im.at(x, y);
+      lit = p[0] + p[1] + p[2] > 3 * 150;
+    }
+    if (lit) ++run;
+    else if (run > 0) break;
+  }
+  return run;
+}
+
+int text_scale(const char* a_path, const char* b_path, double k) {
+  const Image a(a_path), b(b_path);
+  if (!a.px || !b.px) return 1;
+  const int ha = status_text_height(a), hb = status_text_height(b);
+  const double ratio = ha > 0 ? static_cast<double>(hb) / ha : 0.0;
+  const bool ok = ha >= 8 && ratio >= 0.8 * k && ratio <= 1.2 * k;
+  std::printf("status line text: %d px in %s, %d px in %s: ratio %.3f (need %.2f +- 20%%) %s\n", ha, a_path, hb, b_path,
+              ratio, k, ok ? "ok" : "FAIL");
+  return ok ? 0 : 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -123,6 +152,7 @@ int main(int argc, char** argv) {
   if (mode == "screenshot" && argc == 3) return screenshot(argv[2]);
   if (mode == "compare" && argc == 4) return compare(argv[2], argv[3]);
   if (mode == "ab" && argc == 3) return ab_screenshot(argv[2]);
-  std::fprintf(stderr, "usage: gui_image_check screenshot FILE | compare A B | ab FILE\n");
+  if (mode == "text_scale" && argc == 5) return text_scale(argv[2], argv[3], std::atof(argv[4]));
+  std::fprintf(stderr, "usage: gui_image_check screenshot FILE | compare A B | ab FILE | text_scale A B K\n");
   return 2;
 }

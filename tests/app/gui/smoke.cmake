@@ -93,3 +93,120 @@ elseif(MODE STREQUAL "match")
   run(${SPH} run sod --until 0 --frames ${OUT}/headless --size 1280x720 --quiet)
   run(${CHECK} compare ${OUT}/gui/frame_00000.png ${OUT}/headless/frame_00000.png)
 endif()
+
+# Projector mode (MODE projector): at --ui-scale 2 the font atlas is rebuilt with DejaVu Sans at 32 px (16 at
+# 1x) and the status line's text is twice as tall in the screenshot; Ctrl+= four times and Ctrl+- once give
+# 1.75x (28 px); without the font file, ImGui's default font and a message.
+if(MODE STREQUAL "projector")
+  foreach(scale 1 2)
+    execute_process(COMMAND ${XVFB_RUN} -a -s "-screen 0 1600x900x24" ${GUI} --scene sod --paused --ui-scale ${scale}
+                    --screenshot ${OUT}/scale${scale}.png --quit-after-frames 20 --config-dir ${OUT}/cfg
+                    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err WORKING_DIRECTORY ${OUT})
+    message("${out}${err}")
+    set(out${scale} "${out}")
+    if(NOT rc EQUAL 0)
+      message(FATAL_ERROR "exit code ${rc}")
+    endif()
+  endforeach()
+  if(NOT out1 MATCHES "ui: scale 1.00, start font, font 16 px, atlas [0-9]+ x ([0-9]+)")
+    message(FATAL_ERROR "expected the 16 px font at scale 1")
+  endif()
+  set(atlas1 ${CMAKE_MATCH_1})
+  if(NOT out2 MATCHES "ui: scale 2.00, DejaVuSans.ttf at 32 px, font 32 px, atlas [0-9]+ x ([0-9]+)")
+    message(FATAL_ERROR "expected DejaVu Sans rasterised at 32 px at scale 2")
+  endif()
+  if(NOT CMAKE_MATCH_1 GREATER atlas1)
+    message(FATAL_ERROR "expected a larger font atlas at scale 2 (${CMAKE_MATCH_1} rows against ${atlas1})")
+  endif()
+  run(${CHECK} text_scale ${OUT}/scale1.png ${OUT}/scale2.png 2)
+  execute_process(COMMAND ${XVFB_RUN} -a ${GUI} --scene sod --paused --tap-keys 5:++++ --tap-keys 10:- --quit-after-frames 20
+                  --config-dir ${OUT}/cfg RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err WORKING_DIRECTORY ${OUT})
+  message("${out}${err}")
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "ui: scale 1.75, DejaVuSans.ttf at 28 px, font 28 px")
+    message(FATAL_ERROR "expected Ctrl+= x4, Ctrl+- x1 to give 1.75x (28 px)")
+  endif()
+  execute_process(COMMAND ${CMAKE_COMMAND} -E env SPH_GUI_FONT=${OUT}/no-such-font.ttf ${XVFB_RUN} -a ${GUI} --scene sod
+                  --paused --ui-scale 2 --quit-after-frames 10 --config-dir ${OUT}/cfg
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err WORKING_DIRECTORY ${OUT})
+  message("${out}${err}")
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "no-such-font.ttf not found: ImGui's built-in font at 26 px")
+    message(FATAL_ERROR "expected the built-in font and a message naming the missing file")
+  endif()
+endif()
+
+# The lesson panel (MODE lesson): --lesson FILE --lesson-step N --lesson-check loads the step and prints its
+# check's result at exit (true with the measured numbers, or FALSE); a malformed lesson exits 6.
+if(MODE STREQUAL "lesson")
+  execute_process(COMMAND ${XVFB_RUN} -a ${GUI} --lesson ${REPO}/assets/lessons/shock_tube.json --lesson-step 3
+                  --lesson-check --quit-after-frames 30 --config-dir ${OUT}/cfg
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err WORKING_DIRECTORY ${OUT})
+  message("${out}${err}")
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "lesson step 3/3: true: L1_rho=0.00304[0-9]* < 0.005")
+    message(FATAL_ERROR "expected step 3's claim checked true with its measured L1_rho")
+  endif()
+  if(NOT out MATCHES "last state: step [0-9]+, t = [0-9.e-]+\n")
+    message(FATAL_ERROR "expected the step's scene on screen")
+  endif()
+  file(WRITE ${OUT}/false.json "{\"title\": \"x\", \"steps\": [{\"title\": \"s\", \"text\": \"t\", \"scene\": \"sod\", \"set\": {\"scene.n_left\": 100}, \"check\": {\"type\": \"below\", \"metric\": \"L1_rho\", \"until\": 0.05, \"limit\": 1e-6}}]}")
+  execute_process(COMMAND ${XVFB_RUN} -a ${GUI} --lesson ${OUT}/false.json --lesson-check --quit-after-frames 10
+                  --config-dir ${OUT}/cfg RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err WORKING_DIRECTORY ${OUT})
+  message("${out}${err}")
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "lesson step 1/1: FALSE: L1_rho=[0-9.e-]+ > 1e-06")
+    message(FATAL_ERROR "expected the false claim reported FALSE")
+  endif()
+  file(WRITE ${OUT}/bad.json "{\"title\": \"x\", \"steps\": [{\"title\": \"s\"}]}")
+  execute_process(COMMAND ${XVFB_RUN} -a ${GUI} --lesson ${OUT}/bad.json --quit-after-frames 10 --config-dir ${OUT}/cfg
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err WORKING_DIRECTORY ${OUT})
+  message("${out}${err}")
+  if(NOT rc EQUAL 6 OR NOT err MATCHES "bad.json: steps\\[0\\].text")
+    message(FATAL_ERROR "expected exit 6 naming the file and the key")
+  endif()
+endif()
+
+# Pace and recent files (MODE pace): Sod reaches t_end = 0.2 in about 0.2 s, so with --auto-pace on it is
+# slowed to about 8 s (2 s later it is far from t_end, and the pace is reported); a scene file opened is
+# first in recent.json, and a malformed recent.json is replaced.
+if(MODE STREQUAL "pace")
+  execute_process(COMMAND ${XVFB_RUN} -a ${GUI} --scene ${REPO}/assets/scenes/sod.json --auto-pace on --max-fps 30
+                  --quit-after-frames 60 --config-dir ${OUT}/cfg
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err WORKING_DIRECTORY ${OUT})
+  message("${out}${err}")
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "pace: slowed: t_end in 8 s \\(0.025 sim s/s")
+    message(FATAL_ERROR "expected Sod paced to t_end in 8 s")
+  endif()
+  if(NOT out MATCHES "last state: step [0-9]+, t = 0.(0|1[0-4])[0-9]*\n")
+    message(FATAL_ERROR "expected the paced run well before t_end = 0.2 after 2 s")
+  endif()
+  file(READ ${OUT}/cfg/recent.json recent)
+  if(NOT recent MATCHES "assets/scenes/sod.json")
+    message(FATAL_ERROR "expected the scene file in recent.json: ${recent}")
+  endif()
+  file(WRITE ${OUT}/cfg/recent.json "{\"recent\": 3}")
+  execute_process(COMMAND ${XVFB_RUN} -a ${GUI} --scene ${REPO}/assets/scenes/toro1.json --quit-after-frames 5
+                  --config-dir ${OUT}/cfg RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err WORKING_DIRECTORY ${OUT})
+  file(READ ${OUT}/cfg/recent.json recent)
+  if(NOT rc EQUAL 0 OR NOT recent MATCHES "toro1.json" OR recent MATCHES "sod.json")
+    message(FATAL_ERROR "expected a malformed recent.json replaced by the new list: ${recent}")
+  endif()
+endif()
+
+# Pause and scrub (MODE scrub): Sod at 1600 + 200 particles (a few seconds, so the ring holds many frames);
+# once it stops at t_end the view steps back 5 stored frames: it shows an earlier state (view only; the run
+# stays at t_end).
+if(MODE STREQUAL "scrub")
+  execute_process(COMMAND ${XVFB_RUN} -a ${GUI} --scene sod --set scene.n_left=1600 --threads 1 --quit-at-end --scrub-back 5
+                  --quit-after-frames 3000
+                  --screenshot ${OUT}/scrub.png --config-dir ${OUT}/cfg
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err WORKING_DIRECTORY ${OUT})
+  message("${out}${err}")
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "last state: step [0-9]+, t = 0.2\n")
+    message(FATAL_ERROR "expected the live run at t_end")
+  endif()
+  if(NOT out MATCHES "view shows stored frame ([0-9]+) of ([0-9]+): step ([0-9]+), t = 0.(0|1)[0-9]*\n")
+    message(FATAL_ERROR "expected the view on a stored frame before t_end")
+  endif()
+  math(EXPR back "${CMAKE_MATCH_2} - ${CMAKE_MATCH_1}")
+  if(NOT back EQUAL 5 OR CMAKE_MATCH_2 GREATER 240 OR CMAKE_MATCH_2 LESS 20)
+    message(FATAL_ERROR "expected the frame 5 back from the newest of 20-240 stored (${back} back of ${CMAKE_MATCH_2})")
+  endif()
+endif()

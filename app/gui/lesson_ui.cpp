@@ -1,0 +1,50 @@
+#include "lesson_ui.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <sstream>
+
+#include "sph/lesson_check.h"
+
+namespace sph::gui {
+namespace {
+
+/// 17 digits: reads back as the same double (RunConfig::set takes text).
+std::string exact(double v) {
+  std::ostringstream os;
+  os.precision(17);
+  os << v;
+  return os.str();
+}
+
+}  // namespace
+
+std::vector<std::string> lesson_files() {
+  std::vector<std::string> out;
+  for (const std::filesystem::path& dir : {std::filesystem::path("assets/lessons"),
+                                          std::filesystem::path(SPH_SOURCE_DIR) / "assets" / "lessons"}) {
+    std::error_code ec;
+    if (!std::filesystem::is_directory(dir, ec)) continue;
+    for (const auto& e : std::filesystem::directory_iterator(dir, ec))
+      if (e.path().extension() == ".json") out.push_back(e.path().string());
+    if (!out.empty()) break;  // the working directory's copy first
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+RunConfig step_config(const LessonStep& step) {
+  const LessonCheck& k = step.check;
+  if (k.type == LessonCheck::Type::Compare) return lesson_config(step, k.a);
+  if (k.type == LessonCheck::Type::Falls) return lesson_config(step, {{k.key, exact(k.values.front())}});
+  return lesson_config(step, {});
+}
+
+std::vector<std::string> step_compare(const LessonStep& step) {
+  std::vector<std::string> out;
+  if (step.check.type != LessonCheck::Type::Compare) return out;
+  for (const auto& [key, value] : step.check.b) out.push_back(key + "=" + value);
+  return out;
+}
+
+}  // namespace sph::gui

@@ -1,0 +1,67 @@
+// Lessons: a JSON file (assets/lessons/) of steps, each with a short text, the scene and parameters to
+// load, what to change, what to look at, and a claim the program checks by running the scene (see
+// sph/lesson_check.h). Parsing validates everything a check needs (scene, keys, values, the metric) so a
+// bad file is refused, naming the file and the key, before anything runs.
+#pragma once
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace sph {
+
+/// A malformed lesson file: the message names the file and the key ("FILE: steps[2].check.factor: ...").
+struct LessonError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// key=value overrides in file order (values as text, as RunConfig::set takes them).
+using LessonSets = std::vector<std::pair<std::string, std::string>>;
+
+/// What a step claims. Every run starts from the step's scene and sets, runs to `until` and measures
+/// `metric` (a reference column such as L1_rho or dE, or E_drift, tv_vx), reduced over the run by
+/// `reduce`: "end" (the value at `until`), "max" (largest |value| after any step) or "growth" (largest
+/// |value| in the second half of the run over the largest in the first half: 1 for a bounded error,
+/// 2 for one growing linearly).
+struct LessonCheck {
+  enum class Type { Falls, Compare, Below, Above };
+  Type type = Type::Below;
+  std::string metric;
+  std::string reduce = "end";
+  double until = -1.0;  ///< < 0: the scene's time.t_end
+  /// Falls: the metric at each value of `key` is below the previous one divided by `factor`.
+  std::string key;
+  std::vector<double> values;
+  /// Compare: runs A and B (the step's sets, then these); the `smaller` run's metric times `factor` is
+  /// below the other's.
+  LessonSets a, b;
+  char smaller = 'a';
+  double factor = 1.0;  ///< Falls, Compare: the margin (>= 1)
+  double limit = 0.0;   ///< Below, Above: the bound
+};
+
+struct LessonStep {
+  std::string title, text;
+  std::string scene;  ///< built-in name or scene file (relative to the lesson file's folder if it exists there)
+  LessonSets sets;
+  std::string change, look_at;
+  LessonCheck check;
+};
+
+struct Lesson {
+  std::string file;  ///< where it was read from (messages)
+  std::string title, summary;
+  std::vector<LessonStep> steps;
+};
+
+/// Parses and validates lesson JSON text; `origin` names it in messages (and its folder resolves
+/// relative scene files). Throws LessonError.
+Lesson parse_lesson(const std::string& text, const std::string& origin);
+/// Reads and parses a lesson file; throws LessonError (also when it cannot be read).
+Lesson load_lesson(const std::string& path);
+/// The steps as text (`sph lesson show`): title, text, scene and sets, change, look at, the claim.
+std::string lesson_text(const Lesson& lesson);
+/// One line stating a step's claim, e.g. "L1_rho at t = 0.2 falls by 1.5x each time scene.n_left goes 100 -> 200 -> 400".
+std::string claim_text(const LessonStep& step);
+
+}  // namespace sph

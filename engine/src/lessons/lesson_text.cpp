@@ -1,0 +1,60 @@
+// Lessons as text (`sph lesson show`, the GUI's claim line).
+#include <cstdio>
+
+#include "sph/lesson.h"
+
+namespace sph {
+namespace {
+
+std::string num(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%g", v);
+  return b;
+}
+
+std::string sets_text(const LessonSets& sets) {
+  std::string s;
+  for (const auto& [k, v] : sets) s += (s.empty() ? "" : " ") + k + "=" + v;
+  return s.empty() ? "(defaults)" : s;
+}
+
+}  // namespace
+
+std::string claim_text(const LessonStep& step) {
+  const LessonCheck& k = step.check;
+  const std::string m = k.reduce == "end" ? k.metric : k.reduce + "(" + k.metric + ")";
+  const std::string at = k.until > 0.0 ? " at t = " + num(k.until) : " at t_end";
+  const std::string margin = k.factor > 1.0 ? " by at least " + num(k.factor) + "x" : "";
+  switch (k.type) {
+    case LessonCheck::Type::Falls: {
+      std::string seq;
+      for (double v : k.values) seq += (seq.empty() ? "" : " -> ") + num(v);
+      return m + at + " falls" + margin + " at each step of " + k.key + " = " + seq;
+    }
+    case LessonCheck::Type::Compare: {
+      const LessonSets& lo = k.smaller == 'a' ? k.a : k.b;
+      const LessonSets& hi = k.smaller == 'a' ? k.b : k.a;
+      return m + at + " with " + sets_text(lo) + " is smaller" + margin + " than with " + sets_text(hi);
+    }
+    case LessonCheck::Type::Below: return m + at + " < " + num(k.limit);
+    case LessonCheck::Type::Above: return m + at + " > " + num(k.limit);
+  }
+  return {};
+}
+
+std::string lesson_text(const Lesson& l) {
+  std::string s = l.title + "\n";
+  if (!l.summary.empty()) s += l.summary + "\n";
+  for (std::size_t i = 0; i < l.steps.size(); ++i) {
+    const LessonStep& st = l.steps[i];
+    s += "\nStep " + std::to_string(i + 1) + "/" + std::to_string(l.steps.size()) + ": " + st.title + "\n";
+    s += "  " + st.text + "\n";
+    s += "  scene: " + st.scene + "  " + sets_text(st.sets) + "\n";
+    if (!st.change.empty()) s += "  change: " + st.change + "\n";
+    if (!st.look_at.empty()) s += "  look at: " + st.look_at + "\n";
+    s += "  claim: " + claim_text(st) + "\n";
+  }
+  return s;
+}
+
+}  // namespace sph

@@ -1,0 +1,37 @@
+// The lesson panel's helpers: the shipped lessons are found, and a step loads on screen as its check's
+// first run (a compare step: run A with the a sets and the A/B comparison with the b sets).
+#include "lesson_ui.h"
+
+#include <gtest/gtest.h>
+
+#include "sph/lesson_check.h"
+
+namespace sph::gui {
+namespace {
+
+TEST(LessonUi, FindsTheShippedLessons) {
+  const auto files = lesson_files();
+  ASSERT_GE(files.size(), 4u);
+  EXPECT_TRUE(std::is_sorted(files.begin(), files.end()));
+  for (const auto& f : files) EXPECT_NO_THROW(load_lesson(f)) << f;
+}
+
+TEST(LessonUi, StepConfigIsTheChecksFirstRun) {
+  const Lesson l = parse_lesson(R"({"title": "T", "steps": [
+    {"title": "a", "text": "x", "scene": "sod", "set": {"kernel.type": "M6"},
+     "check": {"type": "compare", "metric": "L1_v", "a": {"visc.alpha": 1}, "b": {"visc.alpha": 0, "visc.beta": 0}, "smaller": "a"}},
+    {"title": "b", "text": "y", "scene": "sod",
+     "check": {"type": "falls", "metric": "L1_rho", "key": "scene.n_left", "values": [120, 240]}},
+    {"title": "c", "text": "z", "scene": "sod", "check": {"type": "below", "metric": "L1_rho", "limit": 1}}]})",
+                                "t.json");
+  const RunConfig a = step_config(l.steps[0]);
+  EXPECT_EQ(a.params.kernel.type, KernelType::M6);
+  EXPECT_DOUBLE_EQ(a.params.visc.alpha, 1.0);
+  EXPECT_EQ(step_compare(l.steps[0]), (std::vector<std::string>{"visc.alpha=0", "visc.beta=0"}));
+  EXPECT_DOUBLE_EQ(step_config(l.steps[1]).values.at("n_left"), 120.0);
+  EXPECT_TRUE(step_compare(l.steps[1]).empty());
+  EXPECT_EQ(step_config(l.steps[2]).scene->name, "sod");
+}
+
+}  // namespace
+}  // namespace sph::gui
