@@ -257,8 +257,8 @@ int run_command(const RunOptions& opt) {
 #ifdef SPH_HAVE_FRAMES
     progress.finish();
 #endif
-    if (out) out->write_warnings(world);
-    if (out_b) out_b->write_warnings(*b_ptr);
+    if (out) { out->write_warnings(world); out->finish(); }
+    if (out_b) { out_b->write_warnings(*b_ptr); out_b->finish(); }
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (!opt.quiet) {
       const double psteps = static_cast<double>(world.steps()) * static_cast<double>(world.particles().size());

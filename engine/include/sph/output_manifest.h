@@ -1,0 +1,39 @@
+// manifest.json of an output folder: the files a program has completed there, each with its size and
+// CRC-32, rewritten atomically (sph/atomic_file.h) each time a file completes. A file not listed was not
+// completed (a run killed while writing leaves NAME.tmp.PID or NAME.part, never a listed partial file).
+#pragma once
+#include <filesystem>
+#include <mutex>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "sph/atomic_file.h"
+
+namespace sph {
+
+class OutputManifest {
+ public:
+  /// The manifest of `dir` (dir/manifest.json); nothing is written until the first file completes.
+  explicit OutputManifest(std::filesystem::path dir) : dir_(std::move(dir)) {}
+  /// Writes dir/name atomically and records it; "" or "cannot write PATH: REASON".
+  std::string write(const std::string& name, std::string_view bytes);
+  /// Records a file completed by other means (a GrowingFile) and rewrites manifest.json; "" or the error.
+  std::string add(const std::string& name, const FileStamp& stamp);
+  /// The manifest's text: {"files": [{"name", "bytes", "crc32" (8 hex digits)}, ...]} in completion order
+  /// (a file written again keeps its place with the new size and checksum).
+  std::string json() const;
+  const std::filesystem::path& dir() const { return dir_; }
+
+ private:
+  struct Entry {
+    std::string name;
+    FileStamp stamp;
+  };
+  std::string json_locked() const;
+  std::filesystem::path dir_;
+  mutable std::mutex mutex_;  // frames are recorded from the PNG writer's thread
+  std::vector<Entry> entries_;
+};
+
+}  // namespace sph

@@ -1,0 +1,44 @@
+#include "sph/output_manifest.h"
+
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+namespace sph {
+
+std::string OutputManifest::write(const std::string& name, std::string_view bytes) {
+  FileStamp stamp;
+  const std::string err = write_file_atomic(dir_ / name, bytes, &stamp);
+  return err.empty() ? add(name, stamp) : err;
+}
+
+std::string OutputManifest::add(const std::string& name, const FileStamp& stamp) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  bool found = false;
+  for (Entry& e : entries_)
+    if (e.name == name) {
+      e.stamp = stamp;
+      found = true;
+    }
+  if (!found) entries_.push_back({name, stamp});
+  return write_file_atomic(dir_ / "manifest.json", json_locked());
+}
+
+std::string OutputManifest::json() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return json_locked();
+}
+
+std::string OutputManifest::json_locked() const {
+  // one file a line: {"name": ..., "bytes": ..., "crc32": "8 hex digits"}
+  std::string out = "{\"about\": \"files completed in this folder, with size in bytes and CRC-32 (zlib); a file not "
+                    "listed is incomplete\",\n \"files\": [";
+  for (std::size_t k = 0; k < entries_.size(); ++k) {
+    char crc[16];
+    std::snprintf(crc, sizeof crc, "%08x", static_cast<unsigned>(entries_[k].stamp.crc32));
+    const nlohmann::ordered_json e = {{"name", entries_[k].name}, {"bytes", entries_[k].stamp.bytes}, {"crc32", crc}};
+    out += (k ? ",\n  " : "\n  ") + e.dump();
+  }
+  return out + "\n ]}\n";
+}
+
+}  // namespace sph
