@@ -241,7 +241,7 @@ FrameRecorder::~FrameRecorder() {
 
 bool FrameRecorder::flush(std::string* err) { return writer_->wait(err); }
 
-std::unique_ptr<FrameRecorder> FrameRecorder::create(const FrameOptions& o, std::string* err) {
+std::unique_ptr<FrameRecorder> FrameRecorder::create(const FrameOptions& o, std::string* err, bool* io_failure) {
   auto bad_size = [](int v) { return v <= 0 || v % 2 != 0 || v > 16384; };
   if (bad_size(o.width) || bad_size(o.height)) {
     fail(err, std::string(flag::kSize) + " " + std::to_string(o.width) + "x" + std::to_string(o.height) +
@@ -286,6 +286,7 @@ std::unique_ptr<FrameRecorder> FrameRecorder::create(const FrameOptions& o, std:
   if (ec || !std::filesystem::is_directory(o.dir)) {
     fail(err, std::string(flag::kDir) + ": cannot create directory '" + o.dir + "'" +
                   (ec ? ": " + ec.message() : std::string()));
+    if (io_failure) *io_failure = true;
     return nullptr;
   }
   auto renderer = OffscreenRenderer::create(err, o.gl);

@@ -91,8 +91,8 @@ class FrameRecorder {
   ~FrameRecorder();
   /// Validates the options (even width/height, known colour map and profile axis, positive interval
   /// and fps) and creates the directory and the context; nullptr with *err naming the offending flag
-  /// otherwise.
-  static std::unique_ptr<FrameRecorder> create(const FrameOptions& options, std::string* err);
+  /// otherwise (*io_failure set when it is the folder that cannot be made).
+  static std::unique_ptr<FrameRecorder> create(const FrameOptions& options, std::string* err, bool* io_failure = nullptr);
 
   /// True when the snapshot at time t should become the next frame: the first call, then once t
   /// reaches each further multiple of `every` after the first frame's time.

@@ -58,6 +58,14 @@ ssize_t full_after_100(int fd, const void* data, std::size_t size) {
   return ::write(fd, data, n);
 }
 
+// Room for small files only: a write of 500 bytes or more fails after 100 of them (ENOSPC).
+ssize_t full_for_big_files(int fd, const void* data, std::size_t size) {
+  if (size < 500) return ::write(fd, data, size);
+  if (::write(fd, data, 100) != 100) return -1;
+  errno = ENOSPC;
+  return -1;
+}
+
 }  // namespace
 
 TEST_F(AtomicFile, WritesWholeFileWithItsStampAndNoTemporary) {
@@ -146,14 +154,21 @@ TEST_F(AtomicFile, ManifestListsCompletedFilesOnly) {
   sph::testing::set_write_function(full_after_100);
   EXPECT_NE(m.write("particles_00001.csv", std::string(1000, 'p')), "");
   sph::testing::set_write_function(nullptr);
-  ASSERT_EQ(m.write("scene.json", "{\"a\":1}"), "");  // rewritten: same place, new stamp
-  const auto j = nlohmann::json::parse(read_all(dir / "manifest.json"));
+  sph::testing::set_write_function(full_for_big_files);  // a rewrite that fails: unlisted, the old file kept
+  EXPECT_NE(m.write("scene.json", std::string(1000, 's')), "");
+  EXPECT_EQ(read_all(dir / "scene.json"), "{}");
+  sph::testing::set_write_function(nullptr);
+  auto j = nlohmann::json::parse(read_all(dir / "manifest.json"));
+  ASSERT_EQ(j["files"].size(), 1u);
+  EXPECT_EQ(j["files"][0]["name"], "particles_00000.csv");
+  ASSERT_EQ(m.write("scene.json", "{\"a\":1}"), "");  // rewritten: listed again, new stamp
+  j = nlohmann::json::parse(read_all(dir / "manifest.json"));
   ASSERT_EQ(j["files"].size(), 2u);
-  EXPECT_EQ(j["files"][0]["name"], "scene.json");
-  EXPECT_EQ(j["files"][0]["bytes"], 7);
+  EXPECT_EQ(j["files"][1]["name"], "scene.json");
+  EXPECT_EQ(j["files"][1]["bytes"], 7);
   char crc[16];
   std::snprintf(crc, sizeof crc, "%08x", static_cast<unsigned>(sph::crc32_of("{\"a\":1}")));
-  EXPECT_EQ(j["files"][0]["crc32"], crc);
-  EXPECT_EQ(j["files"][1]["name"], "particles_00000.csv");
+  EXPECT_EQ(j["files"][1]["crc32"], crc);
+  EXPECT_EQ(j["files"][0]["name"], "particles_00000.csv");
   EXPECT_EQ(listing(dir), (std::vector<std::string>{"manifest.json", "particles_00000.csv", "scene.json"}));
 }

@@ -16,12 +16,13 @@ class OutputManifest {
  public:
   /// The manifest of `dir` (dir/manifest.json); nothing is written until the first file completes.
   explicit OutputManifest(std::filesystem::path dir) : dir_(std::move(dir)) {}
-  /// Writes dir/name atomically and records it; "" or "cannot write PATH: REASON".
+  /// Writes dir/name atomically and records it (a file listed already is unlisted while it is replaced);
+  /// "" or "cannot write PATH: REASON".
   std::string write(const std::string& name, std::string_view bytes);
   /// Records a file completed by other means (a GrowingFile) and rewrites manifest.json; "" or the error.
   std::string add(const std::string& name, const FileStamp& stamp);
   /// The manifest's text: {"files": [{"name", "bytes", "crc32" (8 hex digits)}, ...]} in completion order
-  /// (a file written again keeps its place with the new size and checksum).
+  /// (a file written again moves to the end).
   std::string json() const;
   const std::filesystem::path& dir() const { return dir_; }
 

@@ -31,6 +31,8 @@ RunConfig RunConfig::from_scene(const std::string& name) {
 }
 
 RunConfig RunConfig::from_file(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw ConfigError(path + ": is a directory, not a scene file");
   std::ifstream in(path);
   if (!in) throw ConfigError(path + ": cannot open scene file");
   std::stringstream text;
@@ -42,7 +44,7 @@ RunConfig RunConfig::from_json_text(const std::string& text, const std::string& 
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // syntax, invalid UTF-8, a number out of double range (1e400)
     throw ConfigError(path + ": malformed JSON: " + e.what());
   }
   if (!j.is_object()) throw ConfigError(path + ": the top level must be an object");

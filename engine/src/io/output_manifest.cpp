@@ -1,11 +1,21 @@
 #include "sph/output_manifest.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
 namespace sph {
 
 std::string OutputManifest::write(const std::string& name, std::string_view bytes) {
+  {  // a file written again leaves the list first: the manifest never describes a file being replaced
+    std::lock_guard<std::mutex> lock(mutex_);
+    const auto it = std::find_if(entries_.begin(), entries_.end(), [&](const Entry& e) { return e.name == name; });
+    if (it != entries_.end()) {
+      entries_.erase(it);
+      const std::string err = write_file_atomic(dir_ / "manifest.json", json_locked());
+      if (!err.empty()) return err;
+    }
+  }
   FileStamp stamp;
   const std::string err = write_file_atomic(dir_ / name, bytes, &stamp);
   return err.empty() ? add(name, stamp) : err;
@@ -13,13 +23,9 @@ std::string OutputManifest::write(const std::string& name, std::string_view byte
 
 std::string OutputManifest::add(const std::string& name, const FileStamp& stamp) {
   std::lock_guard<std::mutex> lock(mutex_);
-  bool found = false;
-  for (Entry& e : entries_)
-    if (e.name == name) {
-      e.stamp = stamp;
-      found = true;
-    }
-  if (!found) entries_.push_back({name, stamp});
+  const auto it = std::find_if(entries_.begin(), entries_.end(), [&](const Entry& e) { return e.name == name; });
+  if (it != entries_.end()) it->stamp = stamp;
+  else entries_.push_back({name, stamp});
   return write_file_atomic(dir_ / "manifest.json", json_locked());
 }
 
