@@ -1,6 +1,7 @@
 // Scene files and overrides: validated completely before a run writes anything.
 #include "sph/config.h"
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -93,7 +94,7 @@ void RunConfig::set(const std::string& key, const std::string& value, const std:
       if (sp.name != name) continue;
       double v = 0.0;
       if (!parse_number(value, v)) throw ConfigError(origin + ": key '" + key + "': '" + value + "' is not a number");
-      if (sp.integer && v != static_cast<double>(static_cast<long long>(v)))
+      if (sp.integer && v != std::floor(v))  // (a cast of 1e30 to an integer is undefined)
         throw ConfigError(origin + ": key '" + key + "': '" + value + "' is not an integer");
       if (v < sp.min || v > sp.max)
         throw ConfigError(origin + ": key '" + key + "' = " + value + " is out of range [" + std::to_string(sp.min) +
