@@ -1,5 +1,7 @@
 #include "png_writer.h"
 
+#include "sph/atomic_file.h"
+
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #define STB_IMAGE_WRITE_STATIC  // private copy: no clash with another user of stb in the binary
 #include <stb/stb_image_write.h>
@@ -16,11 +18,16 @@ bool write_png(const std::string& path, int width, int height, const std::vector
   std::vector<std::uint8_t> rgb(n * 3);  // frames are opaque: drop alpha
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t c = 0; c < 3; ++c) rgb[3 * i + c] = rgba[4 * i + c];
-  if (!stbi_write_png(path.c_str(), width, height, 3, rgb.data(), width * 3)) {
-    *err = "could not write " + path;
+  std::string png;  // encoded in memory, then written atomically (a kill leaves no partial PNG)
+  auto append = [](void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<std::size_t>(size));
+  };
+  if (!stbi_write_png_to_func(append, &png, width, height, 3, rgb.data(), width * 3)) {
+    *err = "cannot write " + path + ": the image cannot be encoded";
     return false;
   }
-  return true;
+  *err = sph::write_file_atomic(path, png);
+  return err->empty();
 }
 
 }  // namespace sph::gui

@@ -9,6 +9,7 @@
 #include <filesystem>
 
 #include "cli_common.h"
+#include "sph/output_manifest.h"
 #include "exit_codes.h"
 #include "sph/convergence.h"
 #include "sph/world.h"
@@ -178,8 +179,11 @@ int bench_command(const BenchOptions& opt) {
   });
   if (rc != kOk) return rc;
   const std::string md = markdown_text(all, threads);
-  if (!write_text_atomic(dir / "bench.csv", csv_text(all, threads, opt.csv_comments)) || !write_text_atomic(dir / "bench.md", md)) {
-    std::fprintf(stderr, "sph: cannot write %s\n", (dir / "bench.csv").string().c_str());
+  OutputManifest manifest(dir);
+  std::string io_err = manifest.write("bench.csv", csv_text(all, threads, opt.csv_comments));
+  if (io_err.empty()) io_err = manifest.write("bench.md", md);
+  if (!io_err.empty()) {
+    std::fprintf(stderr, "sph: I/O error: %s\n", io_err.c_str());
     return kIoError;
   }
 #ifdef SPH_HAVE_FRAMES
@@ -190,7 +194,7 @@ int bench_command(const BenchOptions& opt) {
     view.point_px = 7.f;
     const std::string png = (dir / ("bench_" + b.scene + ".png")).string();
     if (!render_snapshot_rgba(plot_of(b, threads), view, width, height, &rgba, &err) ||
-        !write_png(png, width, height, rgba, &err)) {
+        !write_png(png, width, height, rgba, &err, &manifest)) {
       std::fprintf(stderr, "sph: %s: %s\n", png.c_str(), err.c_str());
       return kIoError;
     }

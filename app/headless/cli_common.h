@@ -1,6 +1,5 @@
 // Helpers shared by the subcommands: --set overrides, comma-separated lists of numbers or names, the
-// output folder, and whole files written atomically (a temporary name, flushed, then renamed: a kill
-// leaves no partial file).
+// output folder. (Whole files are written atomically through sph/atomic_file.h.)
 #pragma once
 #include <filesystem>
 #include <functional>
@@ -27,7 +26,5 @@ bool make_output_dir(const std::filesystem::path& dir, bool* existed);
 int guarded_runs(const char* command, const std::filesystem::path& dir, bool existed, const std::function<void()>& work);
 /// Parses --size WIDTHxHEIGHT of a plot; prints the usage message and returns false when malformed.
 bool parse_plot_size(const std::string& size, int* width, int* height);
-/// Writes `text` to path.tmp, then renames it to path; false on any failure.
-bool write_text_atomic(const std::filesystem::path& path, const std::string& text);
 
 }  // namespace sph::cli

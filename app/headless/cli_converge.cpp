@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "cli_common.h"
+#include "sph/output_manifest.h"
 #include "exit_codes.h"
 #include "sph/convergence.h"
 #include "sph/world.h"
@@ -101,8 +102,11 @@ int converge_command(const ConvergeOptions& opt) {
   });
   if (rc != kOk) return rc;
   const std::string md = convergence_markdown(r);
-  if (!write_text_atomic(dir / "converge.csv", convergence_csv(r, opt.csv_comments)) || !write_text_atomic(dir / "converge.md", md)) {
-    std::fprintf(stderr, "sph: cannot write %s\n", (dir / "converge.csv").string().c_str());
+  OutputManifest manifest(dir);
+  std::string io_err = manifest.write("converge.csv", convergence_csv(r, opt.csv_comments));
+  if (io_err.empty()) io_err = manifest.write("converge.md", md);
+  if (!io_err.empty()) {
+    std::fprintf(stderr, "sph: I/O error: %s\n", io_err.c_str());
     return kIoError;
   }
 #ifdef SPH_HAVE_FRAMES
@@ -112,7 +116,7 @@ int converge_command(const ConvergeOptions& opt) {
   view.color_by = "log10_e";
   view.point_px = 6.f;
   const std::string png = (dir / "converge.png").string();
-  if (!render_snapshot_rgba(plot_of(r), view, width, height, &rgba, &err) || !write_png(png, width, height, rgba, &err)) {
+  if (!render_snapshot_rgba(plot_of(r), view, width, height, &rgba, &err) || !write_png(png, width, height, rgba, &err, &manifest)) {
     std::fprintf(stderr, "sph: %s: %s\n", png.c_str(), err.c_str());
     return kIoError;
   }

@@ -8,6 +8,7 @@
 
 #include "cli_common.h"
 #include "exit_codes.h"
+#include "sph/memory_budget.h"
 #include "run_output.h"
 #include "sph/ic_export.h"
 #include "sph/suggest.h"
@@ -38,6 +39,7 @@ int export_command(const ExportOptions& opt) {
     apply_sets(cfg, opt.sets);
     if (opt.until >= 0.0) cfg.params.time.t_end = opt.until;
     cfg.validate();
+    check_run_memory(cfg);
     const std::string why = hdf5_unsupported(cfg.params);
     if (!why.empty()) throw ConfigError("scene " + cfg.scene->name + ": " + why);
   } catch (const ConfigError& e) {

@@ -17,6 +17,7 @@
 #include "run_signals.h"
 #include "sph/config.h"
 #include "sph/ic_export.h"
+#include "sph/memory_budget.h"
 #include "sph/suggest.h"
 #include "sph/world.h"
 #ifdef SPH_HAVE_FRAMES
@@ -25,6 +26,7 @@
 #include "profile_view.h"
 #include "profile_axis.h"
 #include "progress.h"
+#include "value_parsers.h"
 #endif
 
 namespace sph::cli {
@@ -35,6 +37,7 @@ sph::RunConfig resolve(const RunOptions& opt) {
   apply_sets(cfg, opt.sets);
   if (opt.until >= 0.0) cfg.params.time.t_end = opt.until;
   cfg.validate();
+  check_run_memory(cfg);  // an enormous particle count is refused before anything is allocated
   return cfg;
 }
 
@@ -59,16 +62,13 @@ std::unique_ptr<FrameRecorder> make_recorder(const RunOptions& opt) {
   fo.cmap = opt.cmap;
   if (!opt.range.empty() && opt.range[0] == 'p') {  // pLO:HI, automatic between percentiles (the GUI's p1:99)
     float lo = 0, hi = 0;
-    char c = 0, end = 0;
-    if (std::sscanf(opt.range.c_str() + 1, "%f%c%f%c", &lo, &c, &hi, &end) != 3 || c != ':' || !(lo >= 0.f) ||
-        !(hi <= 100.f) || !(hi > lo))
+    if (!parse_range(opt.range.substr(1), &lo, &hi) || !(lo >= 0.f) || !(hi <= 100.f) || !(hi > lo))
       throw ConfigError("--range " + opt.range + ": expected pLO:HI with 0 <= LO < HI <= 100");
     fo.percentile_lo = lo;
     fo.percentile_hi = hi;
   } else if (opt.range != "auto") {
     float lo = 0, hi = 0;
-    char c = 0;
-    if (std::sscanf(opt.range.c_str(), "%f%c%f", &lo, &c, &hi) != 3 || c != ':' || !(hi > lo))
+    if (!parse_range(opt.range, &lo, &hi) || !(hi > lo))
       throw ConfigError("--range " + opt.range + ": expected auto, pLO:HI (percentiles) or MIN:MAX with MIN < MAX");
     fo.auto_range = false;
     fo.range_min = lo;
@@ -79,7 +79,13 @@ std::unique_ptr<FrameRecorder> make_recorder(const RunOptions& opt) {
   fo.panels = split_names(opt.panels);
   fo.video = opt.video;
   std::string err;
-  auto rec = FrameRecorder::create(fo, &err);
+  const double need = frame_memory_bytes(w, h), avail = available_memory_bytes();
+  if (need > avail)
+    throw ConfigError("--size " + opt.size + ": a frame needs about " + memory_text(need) + " of memory, more than the " +
+                      memory_text(avail) + " available (MemAvailable, ulimit -v)");
+  bool io_failure = false;
+  auto rec = FrameRecorder::create(fo, &err, &io_failure);
+  if (!rec && io_failure) throw IoError(err);  // the folder cannot be made: exit 4
   if (!rec) throw ConfigError(err);
   return rec;
 }
@@ -279,8 +285,8 @@ int run_command(const RunOptions& opt, const ResumePoint* resume) {
 #ifdef SPH_HAVE_FRAMES
     progress.finish();
 #endif
-    if (out) out->write_warnings(world);
-    if (out_b) out_b->write_warnings(*b_ptr);
+    if (out) { out->write_warnings(world); out->finish(); }
+    if (out_b) { out_b->write_warnings(*b_ptr); out_b->finish(); }
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (!opt.quiet) {
       const double psteps = static_cast<double>(world.steps()) * static_cast<double>(world.particles().size());

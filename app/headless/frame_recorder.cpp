@@ -10,6 +10,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <mutex>
 #include <sstream>
 #include <thread>
@@ -107,13 +109,9 @@ bool render_snapshot_rgba(const sph::Snapshot& snap, const render::ViewSettings&
   return r && r->render(snap, view, width, height, rgba, err);
 }
 
-bool write_png(const std::string& path, int width, int height, const std::vector<std::uint8_t>& rgba,
-               std::string* err) {
+std::string encode_png(int width, int height, const std::vector<std::uint8_t>& rgba) {
   const std::size_t n = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
-  if (rgba.size() < n * 4) {
-    fail(err, "write_png: image buffer too small");
-    return false;
-  }
+  if (width <= 0 || height <= 0 || rgba.size() < n * 4) return {};
   // The "up" filter for every row: as small as stb's per-row search on these frames, at half the time.
   static std::once_flag tuned;
   std::call_once(tuned, [] { stbi_write_force_png_filter = 2; });
@@ -123,8 +121,25 @@ bool write_png(const std::string& path, int width, int height, const std::vector
     rgb[3 * i + 1] = rgba[4 * i + 1];
     rgb[3 * i + 2] = rgba[4 * i + 2];
   }
-  if (!stbi_write_png(path.c_str(), width, height, 3, rgb.data(), width * 3)) {
-    fail(err, "could not write " + path);
+  std::string png;
+  auto append = [](void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<std::size_t>(size));
+  };
+  if (!stbi_write_png_to_func(append, &png, width, height, 3, rgb.data(), width * 3)) return {};
+  return png;
+}
+
+bool write_png(const std::string& path, int width, int height, const std::vector<std::uint8_t>& rgba,
+               std::string* err, sph::OutputManifest* manifest) {
+  const std::string png = encode_png(width, height, rgba);
+  if (png.empty()) {
+    fail(err, "cannot write " + path + ": the image cannot be encoded");
+    return false;
+  }
+  const std::string e = manifest ? manifest->write(std::filesystem::path(path).filename().string(), png)
+                                 : sph::write_file_atomic(path, png);
+  if (!e.empty()) {
+    fail(err, e);
     return false;
   }
   return true;
@@ -137,7 +152,7 @@ bool write_png(const std::string& path, int width, int height, const std::vector
 /// memory) and hands over the pixels.
 class AsyncPngWriter {
  public:
-  AsyncPngWriter() : thread_([this] { run(); }) {}
+  explicit AsyncPngWriter(sph::OutputManifest* manifest) : manifest_(manifest), thread_([this] { run(); }) {}
   ~AsyncPngWriter() {
     {
       std::lock_guard<std::mutex> lock(mutex_);
@@ -182,7 +197,7 @@ class AsyncPngWriter {
       if (!busy_ && quit_) return;
       lock.unlock();
       std::string err;
-      const bool ok = write_png(path_, width_, height_, pixels_, &err);  // the job is ours while busy_
+      const bool ok = write_png(path_, width_, height_, pixels_, &err, manifest_);  // the job is ours while busy_
       lock.lock();
       if (!ok) error_ = err;
       busy_ = false;
@@ -190,6 +205,7 @@ class AsyncPngWriter {
     }
   }
 
+  sph::OutputManifest* manifest_;
   std::mutex mutex_;
   std::condition_variable wake_, done_;
   bool busy_ = false, quit_ = false;
@@ -202,7 +218,10 @@ class AsyncPngWriter {
 // ---- FrameRecorder -------------------------------------------------------------------------------
 
 FrameRecorder::FrameRecorder(const FrameOptions& options, std::unique_ptr<OffscreenRenderer> renderer)
-    : options_(options), renderer_(std::move(renderer)), writer_(std::make_unique<AsyncPngWriter>()) {
+    : options_(options),
+      renderer_(std::move(renderer)),
+      manifest_(options.dir),
+      writer_(std::make_unique<AsyncPngWriter>(&manifest_)) {
   view_.color_by = options.color_by;
   view_.cmap = options.cmap;
   view_.auto_range = options.auto_range;
@@ -222,7 +241,7 @@ FrameRecorder::~FrameRecorder() {
 
 bool FrameRecorder::flush(std::string* err) { return writer_->wait(err); }
 
-std::unique_ptr<FrameRecorder> FrameRecorder::create(const FrameOptions& o, std::string* err) {
+std::unique_ptr<FrameRecorder> FrameRecorder::create(const FrameOptions& o, std::string* err, bool* io_failure) {
   auto bad_size = [](int v) { return v <= 0 || v % 2 != 0 || v > 16384; };
   if (bad_size(o.width) || bad_size(o.height)) {
     fail(err, std::string(flag::kSize) + " " + std::to_string(o.width) + "x" + std::to_string(o.height) +
@@ -267,6 +286,7 @@ std::unique_ptr<FrameRecorder> FrameRecorder::create(const FrameOptions& o, std:
   if (ec || !std::filesystem::is_directory(o.dir)) {
     fail(err, std::string(flag::kDir) + ": cannot create directory '" + o.dir + "'" +
                   (ec ? ": " + ec.message() : std::string()));
+    if (io_failure) *io_failure = true;
     return nullptr;
   }
   auto renderer = OffscreenRenderer::create(err, o.gl);
@@ -304,9 +324,10 @@ bool FrameRecorder::write_frame(const render::FrameScene& scene, std::string* er
   return true;
 }
 
-std::string FrameRecorder::ffmpeg_command() const {
+std::string FrameRecorder::ffmpeg_command(const std::string& output) const {
   const std::string pattern = (std::filesystem::path(options_.dir) / "frame_%05d.png").string();
-  const std::string out = shell_quote(options_.video.empty() ? std::string("video.mp4") : options_.video);
+  const std::string out =
+      shell_quote(!output.empty() ? output : options_.video.empty() ? std::string("video.mp4") : options_.video);
   const std::string in = "ffmpeg -y -loglevel error -framerate " + std::to_string(options_.fps) + " -i " +
                          shell_quote(pattern);
   if (options_.video.ends_with(".gif"))  // one palette made for these frames: flat colours stay flat
@@ -334,17 +355,29 @@ bool FrameRecorder::make_video(std::string* err) {
                   options_.dir + "', make the video later with:\n  " + ffmpeg_command());
     return false;
   }
-  const int status = std::system(ffmpeg_command().c_str());
+  // ffmpeg writes VIDEO.tmp.PID.EXT (it picks the format from the extension), renamed when complete
+  const std::filesystem::path video(options_.video);
+  const std::filesystem::path tmp =
+      video.parent_path() / (video.stem().string() + ".tmp." + std::to_string(::getpid()) + video.extension().string());
+  const int status = std::system(ffmpeg_command(tmp.string()).c_str());
+  std::error_code ec;
   if (status != 0) {
+    std::filesystem::remove(tmp, ec);
     fail(err, std::string(flag::kVideo) + ": ffmpeg failed (status " + std::to_string(status) + "): " +
                   ffmpeg_command());
     return false;
   }
-  std::error_code ec;
-  std::filesystem::copy_file(frame_path(frames_ - 1), still_path(), std::filesystem::copy_options::overwrite_existing,
-                             ec);
+  std::filesystem::rename(tmp, video, ec);
   if (ec) {
-    fail(err, std::string(flag::kVideo) + ": cannot write the still " + still_path() + ": " + ec.message());
+    std::filesystem::remove(tmp, ec);
+    fail(err, std::string(flag::kVideo) + ": cannot write " + options_.video + ": " + ec.message());
+    return false;
+  }
+  std::ifstream last(frame_path(frames_ - 1), std::ios::binary);  // the still: the last frame, atomically
+  const std::string png((std::istreambuf_iterator<char>(last)), std::istreambuf_iterator<char>());
+  const std::string e = last ? sph::write_file_atomic(still_path(), png) : "cannot read " + frame_path(frames_ - 1);
+  if (!e.empty()) {
+    fail(err, std::string(flag::kVideo) + ": " + e);
     return false;
   }
   return true;

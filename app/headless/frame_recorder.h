@@ -9,6 +9,7 @@
 #include "frame_scene.h"
 #include "offscreen_context.h"
 #include "renderer.h"
+#include "sph/output_manifest.h"
 #include "view_settings.h"
 
 namespace sph {
@@ -75,9 +76,12 @@ class OffscreenRenderer {
 /// Renders one snapshot to RGBA8 (rows top-down) with a temporary context (tests, one-off images).
 bool render_snapshot_rgba(const sph::Snapshot& snap, const render::ViewSettings& view, int width, int height,
                           std::vector<std::uint8_t>* rgba, std::string* err);
-/// Writes an RGBA8 image (rows top-down) as an RGB PNG.
+/// An RGBA8 image (rows top-down) as the bytes of an RGB PNG; empty when it cannot be encoded.
+std::string encode_png(int width, int height, const std::vector<std::uint8_t>& rgba);
+/// Writes an RGBA8 image (rows top-down) as an RGB PNG, atomically (sph/atomic_file.h); with a manifest,
+/// into its folder under path's file name and listed in its manifest.json.
 bool write_png(const std::string& path, int width, int height, const std::vector<std::uint8_t>& rgba,
-               std::string* err);
+               std::string* err, sph::OutputManifest* manifest = nullptr);
 
 class AsyncPngWriter;
 
@@ -87,8 +91,8 @@ class FrameRecorder {
   ~FrameRecorder();
   /// Validates the options (even width/height, known colour map and profile axis, positive interval
   /// and fps) and creates the directory and the context; nullptr with *err naming the offending flag
-  /// otherwise.
-  static std::unique_ptr<FrameRecorder> create(const FrameOptions& options, std::string* err);
+  /// otherwise (*io_failure set when it is the folder that cannot be made).
+  static std::unique_ptr<FrameRecorder> create(const FrameOptions& options, std::string* err, bool* io_failure = nullptr);
 
   /// True when the snapshot at time t should become the next frame: the first call, then once t
   /// reaches each further multiple of `every` after the first frame's time.
@@ -106,7 +110,8 @@ class FrameRecorder {
   std::string frame_path(int index) const;
 
   /// The ffmpeg command line that turns the frames into options.video (a GIF gets its own palette).
-  std::string ffmpeg_command() const;
+  /// `output` (default: options.video) replaces the file it writes.
+  std::string ffmpeg_command(const std::string& output = "") const;
   /// Flushes, then runs ffmpeg_command() if options.video is set (true and nothing done otherwise),
   /// and copies the last frame beside the video as its still (still_path()).
   bool make_video(std::string* err);
@@ -122,6 +127,7 @@ class FrameRecorder {
   FrameOptions options_;
   render::ViewSettings view_;
   std::unique_ptr<OffscreenRenderer> renderer_;
+  sph::OutputManifest manifest_;  // the frame folder's manifest.json (written from the PNG thread)
   std::unique_ptr<AsyncPngWriter> writer_;
   std::vector<std::uint8_t> pixels_;
   int frames_ = 0;

@@ -67,8 +67,11 @@ std::string extra_json(const OutputResume& r, int next_out, std::int64_t next_ch
   for (const PvdEntry& e : r.series) series.push_back({e.t, e.file});
   j["series"] = series;
   j["steps"] = r.steps;
-  j["diag_bytes"] = r.diag_bytes;
-  j["errors_bytes"] = r.errors_bytes;
+  j["diag"] = {r.diag.bytes, r.diag.crc32};
+  j["errors"] = {r.errors.bytes, r.errors.crc32};
+  nlohmann::ordered_json manifest = nlohmann::ordered_json::array();
+  for (const ManifestEntry& e : r.manifest) manifest.push_back({e.name, e.stamp.bytes, e.stamp.crc32});
+  j["manifest"] = manifest;
   return j.dump();
 }
 
@@ -81,18 +84,25 @@ void read_extra(const std::string& text, ResumePoint& rp) {
     rp.output.files = j.at("files").get<int>();
     for (const auto& e : j.at("series")) rp.output.series.push_back({e.at(0).get<double>(), e.at(1).get<std::string>()});
     rp.output.steps = j.at("steps").get<std::vector<std::int64_t>>();
-    rp.output.diag_bytes = j.at("diag_bytes").get<std::uint64_t>();
-    rp.output.errors_bytes = j.at("errors_bytes").get<std::uint64_t>();
+    const auto stamp = [](const nlohmann::json& a) {
+      return FileStamp{a.at(0).get<std::uint64_t>(), a.at(1).get<std::uint32_t>()};
+    };
+    rp.output.diag = stamp(j.at("diag"));
+    rp.output.errors = stamp(j.at("errors"));
+    for (const auto& e : j.at("manifest"))
+      rp.output.manifest.push_back({e.at(0).get<std::string>(), stamp(nlohmann::json{e.at(1), e.at(2)})});
   } catch (const nlohmann::json::exception& e) {
     throw CheckpointError("checkpoint " + rp.path + ": its output state cannot be read (" + e.what() + ")");
   }
 }
 
-/// The streamed CSV `name` in dir must hold at least what it held at the checkpoint.
+/// The growing CSV `name` in dir (NAME.part while its run goes on, NAME once a stopped run finished it)
+/// must hold at least what it held at the checkpoint.
 void check_output(const std::string& dir, const std::string& name, std::uint64_t bytes, const std::string& ck) {
   if (bytes == 0) return;
-  const std::string path = dir + "/" + name;
+  std::string path = dir + "/" + name + ".part";
   std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) path = dir + "/" + name;
   const auto size = std::filesystem::file_size(path, ec);
   if (ec) throw CheckpointError("checkpoint " + ck + ": the output it continues, " + path + ", is missing");
   if (size < bytes)
@@ -112,8 +122,8 @@ ResumePoint load_resume_point(const std::string& dir, RunOptions* opt) {
   *opt = options_from_json(rp.ck.run_options, rp.path);
   opt->out = dir;  // the directory may have moved since
   read_extra(rp.ck.extra, rp);
-  check_output(dir, "diagnostics.csv", rp.output.diag_bytes, rp.path);
-  check_output(dir, "errors.csv", rp.output.errors_bytes, rp.path);
+  check_output(dir, "diagnostics.csv", rp.output.diag.bytes, rp.path);
+  check_output(dir, "errors.csv", rp.output.errors.bytes, rp.path);
   return rp;
 }
 

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "cli_common.h"
 #include "sph/ic_export.h"
@@ -12,35 +13,52 @@
 namespace sph::cli {
 namespace {
 
-std::ofstream open_file(const std::string& path) {
-  std::ofstream f(path);
-  if (!f) throw IoError("cannot write " + path);
-  return f;
-}
-
 std::string diagnostics_note(const World& world) {
   return world.scene().name + ": conserved quantities per step (seed 000 eqs. 3.4.1-3.4.5)";
 }
 
 }  // namespace
 
-void write_file(const std::string& path, const std::string& bytes) {
-  if (!write_text_atomic(path, bytes)) throw IoError("cannot write " + path);
+void remove_stale_temporaries(const std::string& dir) {
+  // NAME.tmp.PID: a whole file a killed run was writing (sph/atomic_file.h); this run owns the folder
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator(dir, ec)) {
+    const std::string name = e.path().filename().string();
+    const auto dot = name.rfind(".tmp.");
+    if (dot == std::string::npos || dot + 5 >= name.size()) continue;
+    if (name.find_first_not_of("0123456789", dot + 5) != std::string::npos) continue;
+    std::filesystem::remove(e.path(), ec);
+  }
 }
 
+void write_file(const std::string& path, const std::string& bytes) {
+  const std::string err = write_file_atomic(path, bytes);
+  if (!err.empty()) throw IoError(err);
+}
+
+void RunOutput::check(const std::string& err) {
+  if (err.empty()) return;
+  failed_ = true;
+  throw IoError(err);
+}
+
+void RunOutput::put(const std::string& name, const std::string& bytes) { check(manifest_.write(name, bytes)); }
+
 RunOutput::RunOutput(const std::string& dir, const World& world, const OutputOptions& options)
-    : dir_(dir), options_(options) {
+    : dir_(dir), options_(options), manifest_(dir) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw IoError("cannot create output directory " + dir + ": " + ec.message());
-  open_file(dir + "/scene.json") << world.config().to_json();
-  diag_ = open_file(dir + "/diagnostics.csv");
-  if (options_.csv_comments) diag_ << "# " << diagnostics_note(world) << "\n";
-  diag_ << diagnostics_csv_header() << "\n";
+  if (!std::filesystem::is_directory(dir, ec)) throw IoError("cannot create output directory " + dir + ": not a directory");
+  remove_stale_temporaries(dir);
+  put("scene.json", world.config().to_json());
+  check(diag_.open(dir + "/diagnostics.csv"));
+  if (options_.csv_comments) check(diag_.append("# " + diagnostics_note(world) + "\n"));
+  check(diag_.append(diagnostics_csv_header() + "\n"));
   if (world.has_reference()) {
-    errors_ = open_file(dir + "/errors.csv");
-    if (options_.csv_comments) errors_ << "# " << world.reference()->description() << "\n";
-    errors_ << errors_csv_header(world.reference_columns()) << "\n";
+    check(errors_.open(dir + "/errors.csv"));
+    if (options_.csv_comments) check(errors_.append("# " + world.reference()->description() + "\n"));
+    check(errors_.append(errors_csv_header(world.reference_columns()) + "\n"));
     valid_until_ = world.reference()->valid_until();
   }
   columns_ = particle_columns(world);
@@ -59,23 +77,51 @@ std::vector<Field> RunOutput::particle_columns(const World& world) {
   return columns_;
 }
 
+RunOutput::~RunOutput() {
+  if (finished_) return;
+  if (failed_) {
+    diag_.abandon();
+    errors_.abandon();
+    return;
+  }
+  try {
+    finish();
+  } catch (const IoError& e) {
+    std::fprintf(stderr, "sph: I/O error: %s\n", e.what());
+  }
+}
+
+void RunOutput::finish() {
+  if (finished_) return;
+  finished_ = true;
+  for (GrowingFile* g : {&diag_, &errors_}) {
+    if (!g->is_open()) continue;
+    const FileStamp stamp = g->stamp();
+    const std::string name = g->path().filename().string();
+    check(g->finish());
+    check(manifest_.add(name, stamp));
+  }
+}
+
 void RunOutput::write_diagnostics(const World& world) {
-  diag_ << diagnostics_csv_row(world.diagnostics()) << "\n";
-  if (!diag_) throw IoError("cannot write " + dir_ + "/diagnostics.csv");
+  check(diag_.append(diagnostics_csv_row(world.diagnostics()) + "\n"));
 }
 
 void RunOutput::write_particles(const World& world) {
   char stem[32];
   std::snprintf(stem, sizeof stem, "particles_%05d", files_);
-  const std::string base = dir_ + "/" + stem;
-  const std::string path = base + ".csv";
-  std::ofstream f = open_file(path);
+  const std::string base = stem;
   const Particles& p = world.particles();
-  if (options_.csv_comments) f << "# t = " << world.time() << ", step " << world.steps() << "\n";
+  std::string f;
+  if (options_.csv_comments) {
+    std::ostringstream note;  // the default float format of earlier versions
+    note << "# t = " << world.time() << ", step " << world.steps() << "\n";
+    f += note.str();
+  }
   const bool walls = p.fluid() < p.size();
-  f << "id,x,y,z,vx,vy,vz";
-  for (Field c : columns_) f << "," << info(c).key;
-  f << (walls ? ",kind\n" : "\n");
+  f += "id,x,y,z,vx,vy,vz";
+  for (Field c : columns_) (f += ",") += info(c).key;
+  f += walls ? ",kind\n" : "\n";
   std::string line;
   char num[32];
   for (const std::uint32_t i : world.by_id()) {  // rows in id order, whatever the storage order
@@ -89,29 +135,30 @@ void RunOutput::write_particles(const World& world) {
     for (Field c : columns_) put(p[c][i]);
     if (walls) line += p.is_wall(i) ? ",1" : ",0";
     line += '\n';
-    f << line;
+    f += line;
   }
-  if (!f) throw IoError("cannot write " + path);
+  check(diag_.flush());  // the rows up to this output reach the system with the particle file
+  put(base + ".csv", f);
   ++files_;
   series_.push_back({world.time(), stem});
   steps_.push_back(world.steps());
   if (world.has_reference()) {
-    errors_ << errors_csv_row(world.time(), world.reference_values(), world.time() <= valid_until_ * (1.0 + 1e-12))
-            << "\n";
-    if (!errors_) throw IoError("cannot write " + dir_ + "/errors.csv");
+    check(errors_.append(
+        errors_csv_row(world.time(), world.reference_values(), world.time() <= valid_until_ * (1.0 + 1e-12)) + "\n"));
+    check(errors_.flush());
   }
   if (options_.vtu) {
-    write_file(base + ".vtu", vtu_file(world));
+    put(base + ".vtu", vtu_file(world));
     std::vector<PvdEntry> entries = series_;
     for (PvdEntry& e : entries) e.file += ".vtu";
-    write_file(dir_ + "/particles.pvd", pvd_file(entries));
+    put("particles.pvd", pvd_file(entries));
   }
-  if (options_.splash) write_file(base + ".dat", splash_ascii_file(world));
-  if (options_.hdf5) write_file(base + ".hdf5", hdf5_snapshot(world, IcFormat::Swift));
+  if (options_.splash) put(base + ".dat", splash_ascii_file(world));
+  if (options_.hdf5) put(base + ".hdf5", hdf5_snapshot(world, IcFormat::Swift));
   if (!options_.csv_comments) write_meta(world);
 }
 
-void RunOutput::write_meta(const World& world) const {
+void RunOutput::write_meta(const World& world) {
   nlohmann::ordered_json j;
   j["scene"] = world.scene().name;
   j["about"] = "what the comment lines of the CSV files said (sph run --csv-comments puts them back in the files)";
@@ -121,19 +168,18 @@ void RunOutput::write_meta(const World& world) const {
   for (std::size_t k = 0; k < series_.size(); ++k)
     files.push_back({{"file", series_[k].file + ".csv"}, {"t", series_[k].t}, {"step", steps_[k]}});
   j["particles"] = files;
-  write_file(dir_ + "/csv_meta.json", j.dump(2) + "\n");
+  put("csv_meta.json", j.dump(2) + "\n");
 }
 
 void RunOutput::write_warnings(const World& world) {
-  const std::string path = dir_ + "/warnings.csv";
-  std::ofstream f = open_file(path);
+  std::ostringstream f;  // written whole at the end of the run (atomically)
   f << "kind,step,t,particle,checks,message\n";
   for (const RunWarning& w : world.warnings()) {
     std::string msg = w.message;  // one CSV field: quoted, inner quotes doubled
     for (std::size_t k = msg.find('"'); k != std::string::npos; k = msg.find('"', k + 2)) msg.insert(k, 1, '"');
     f << w.kind << "," << w.step << "," << w.t << "," << w.particle << "," << w.times << ",\"" << msg << "\"\n";
   }
-  if (!f) throw IoError("cannot write " + path);
+  put("warnings.csv", f.str());
 }
 
 }  // namespace sph::cli

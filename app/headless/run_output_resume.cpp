@@ -1,53 +1,39 @@
-// RunOutput continued from a checkpoint (sph resume): the streamed CSVs are cut back to where they
-// stood at the checkpoint and appended to; the particle-file counters and series are taken back.
+// RunOutput continued from a checkpoint (sph resume): the growing CSVs are cut back to where they stood
+// at the checkpoint and appended to, manifest.json lists again what it listed then, and the particle-file
+// counters and series are taken back. The files of an uninterrupted run come out byte for byte.
 #include <filesystem>
 
 #include "run_output.h"
 
 namespace sph::cli {
-namespace {
-
-/// Cuts `path` back to `bytes` and opens it for appending; throws IoError naming it.
-std::ofstream reopen(const std::string& path, std::uint64_t bytes) {
-  std::error_code ec;
-  const auto size = std::filesystem::file_size(path, ec);
-  if (ec || size < bytes)
-    throw IoError(path + " is shorter than at the checkpoint (" + std::to_string(ec ? 0 : size) + " of " +
-                  std::to_string(bytes) + " bytes)");
-  std::filesystem::resize_file(path, bytes, ec);
-  if (ec) throw IoError("cannot cut back " + path + ": " + ec.message());
-  std::ofstream f(path, std::ios::app | std::ios::binary);
-  if (!f) throw IoError("cannot write " + path);
-  return f;
-}
-
-}  // namespace
 
 RunOutput::RunOutput(const std::string& dir, const World& world, const OutputOptions& options,
                      const OutputResume& resume)
-    : dir_(dir), options_(options), files_(resume.files), series_(resume.series), steps_(resume.steps) {
-  write_file(dir + "/scene.json", world.config().to_json());  // the end time may have changed (--until)
-  diag_ = reopen(dir + "/diagnostics.csv", resume.diag_bytes);
+    : dir_(dir), options_(options), manifest_(dir), files_(resume.files), series_(resume.series),
+      steps_(resume.steps) {
+  remove_stale_temporaries(dir);
+  manifest_.restore(resume.manifest);
+  put("scene.json", world.config().to_json());  // the end time may have changed (--until)
+  check(diag_.resume(dir + "/diagnostics.csv", resume.diag));
   if (world.has_reference()) {
-    errors_ = reopen(dir + "/errors.csv", resume.errors_bytes);
+    check(errors_.resume(dir + "/errors.csv", resume.errors));
     valid_until_ = world.reference()->valid_until();
   }
   columns_ = particle_columns(world);
 }
 
 OutputResume RunOutput::resume_state() {
-  diag_.flush();
-  if (!diag_) throw IoError("cannot write " + dir_ + "/diagnostics.csv");
+  check(diag_.flush());
   OutputResume r;
   r.files = files_;
   r.series = series_;
   r.steps = steps_;
-  r.diag_bytes = static_cast<std::uint64_t>(diag_.tellp());
+  r.diag = diag_.stamp();
   if (errors_.is_open()) {
-    errors_.flush();
-    if (!errors_) throw IoError("cannot write " + dir_ + "/errors.csv");
-    r.errors_bytes = static_cast<std::uint64_t>(errors_.tellp());
+    check(errors_.flush());
+    r.errors = errors_.stamp();
   }
+  r.manifest = manifest_.entries();
   return r;
 }
 

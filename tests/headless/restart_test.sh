@@ -22,7 +22,7 @@ same() {
 # complete DIR: no temporary file left, every CSV ends with a newline and has as many fields per row as its header
 complete() {
   local f
-  [ -z "$(ls "$1" | grep '\.tmp$')" ] || { echo "  temporary files left: $(ls "$1" | grep '\.tmp$')"; return 1; }
+  [ -z "$(ls "$1" | grep -E '\.tmp(\.[0-9]+)?$|\.part$')" ] || { echo "  temporary files left: $(ls "$1" | grep -E '\.tmp(\.[0-9]+)?$|\.part$')"; return 1; }
   for f in "$1"/*.csv; do
     [ "$(tail -c 1 "$f" | od -An -c | tr -d ' ')" = '\n' ] || { echo "  $f does not end with a newline"; return 1; }
     awk -F, 'NR == 1 { n = NF } NF != n { bad = 1 } END { exit bad }' "$f" || { echo "  $f: a row of another width"; return 1; }

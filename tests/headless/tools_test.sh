@@ -90,7 +90,7 @@ video)
   command -v ffmpeg > /dev/null || skip "ffmpeg is not installed (apt-get install ffmpeg)"
   env -u DISPLAY "$sph" run sod --set scene.n_left=100 --frames "$work/fr" --every 0.02 --size 640x360 \
     --video "$work/sod.mp4" --fps 12 > "$work/video.log"; check "sod --video" 0 $?
-  frames=$(ls "$work/fr" | wc -l)
+  frames=$(ls "$work/fr"/frame_*.png | wc -l)  # beside them: manifest.json
   ok "11 frames (t = 0 ... 0.2 every 0.02)" test "$frames" = 11
   probe() { ffprobe -v error -select_streams v:0 -count_frames -show_entries "stream=$1" -of csv=p=0 "$2"; }
   ok "the MP4 has every frame" test "$(probe nb_read_frames "$work/sod.mp4")" = "$frames"
@@ -100,7 +100,7 @@ video)
   env -u DISPLAY "$sph" run sod --set scene.n_left=100 --every 0.05 --size 640x360 --video "$work/lesson.gif" --fps 4 \
     > /dev/null; check "sod --video lesson.gif" 0 $?
   ok "an animated GIF" test "$(head -c 6 "$work/lesson.gif")" = "GIF89a"
-  ok "the GIF has every frame of lesson_frames/" test "$(probe nb_read_frames "$work/lesson.gif")" = "$(ls "$work/lesson_frames" | wc -l)"
+  ok "the GIF has every frame of lesson_frames/" test "$(probe nb_read_frames "$work/lesson.gif")" = "$(ls "$work/lesson_frames"/frame_*.png | wc -l)"
   "$sph" run sod --video "$work/x.avi" > /dev/null 2> "$work/avi.err"; check "unknown video type refused" 2 $?
   ok "names --video" grep -q -- "--video" "$work/avi.err" ;;
 *) echo "unknown tool $tool"; exit 2 ;;

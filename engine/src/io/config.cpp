@@ -1,6 +1,7 @@
 // Scene files and overrides: validated completely before a run writes anything.
 #include "sph/config.h"
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -31,6 +32,8 @@ RunConfig RunConfig::from_scene(const std::string& name) {
 }
 
 RunConfig RunConfig::from_file(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw ConfigError(path + ": is a directory, not a scene file");
   std::ifstream in(path);
   if (!in) throw ConfigError(path + ": cannot open scene file");
   std::stringstream text;
@@ -42,7 +45,7 @@ RunConfig RunConfig::from_json_text(const std::string& text, const std::string& 
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // syntax, invalid UTF-8, a number out of double range (1e400)
     throw ConfigError(path + ": malformed JSON: " + e.what());
   }
   if (!j.is_object()) throw ConfigError(path + ": the top level must be an object");
@@ -91,7 +94,7 @@ void RunConfig::set(const std::string& key, const std::string& value, const std:
       if (sp.name != name) continue;
       double v = 0.0;
       if (!parse_number(value, v)) throw ConfigError(origin + ": key '" + key + "': '" + value + "' is not a number");
-      if (sp.integer && v != static_cast<double>(static_cast<long long>(v)))
+      if (sp.integer && v != std::floor(v))  // (a cast of 1e30 to an integer is undefined)
         throw ConfigError(origin + ": key '" + key + "': '" + value + "' is not an integer");
       if (v < sp.min || v > sp.max)
         throw ConfigError(origin + ": key '" + key + "' = " + value + " is out of range [" + std::to_string(sp.min) +

@@ -27,7 +27,7 @@ if(MODE STREQUAL "state")
   list(GET rows -1 last)
   string(REGEX MATCH "^[0-9]+" step "${last}")
   execute_process(COMMAND ${XVFB_RUN} -a ${GUI} --scene sod --paused --load-state ${OUT}/run/checkpoint.sph
-                  --quit-after-frames 40 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err WORKING_DIRECTORY ${OUT})
+                  --quit-after-frames 150 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err WORKING_DIRECTORY ${OUT})
   message("${out}${err}")
   if(NOT rc EQUAL 0 OR NOT out MATCHES "last state: step ${step}, t = 0.05\n")
     message(FATAL_ERROR "expected the loaded checkpoint's step ${step} at t = 0.05")
