@@ -18,6 +18,7 @@
 #include "sph/density.h"
 #include "sph/diagnostics.h"
 #include "sph/inspect.h"
+#include "sph/push.h"
 #include "sph/run_warning.h"
 #include "sph/snapshot.h"
 
@@ -91,6 +92,8 @@ struct StepperFrame {
   /// times a second and within a tenth of the engine's time (its `step` says which state it explains),
   /// at every new state otherwise.
   std::optional<Inspection> inspection;
+  Push push;                       ///< the user's push acting now (World::push; inactive = none)
+  std::size_t push_events = 0;     ///< push changes logged by this World so far (World::pushes)
 };
 
 class Stepper {
@@ -137,6 +140,9 @@ class Stepper {
   void set_compare(const std::vector<std::string>& overrides);
   /// Frames carry World::inspect(id) (and run B's, when comparing); id < 0: none.
   void set_inspect(std::int64_t id);
+  /// The user's push (sph/push.h) on run A from its next step on; an inactive push ends it. Logged by
+  /// the World with its step (World::pushes), so the run can be replayed.
+  void set_push(const Push& push);
 
   // --- channel 3: snapshots --------------------------------------------------------------------------
   /// The newest published frame, or nullptr before the first. The frame stays valid and unchanged until

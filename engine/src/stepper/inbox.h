@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "sph/config.h"
+#include "sph/push.h"
 
 namespace sph::detail {
 
@@ -27,6 +28,7 @@ struct Command {
     SetTreeProbe,      ///< `value`: the particle (snapshot index) whose tree walk frames carry; < 0 = none
     SetCompare,        ///< `names`: run B's overrides (key=value); empty = stop comparing
     SetInspect,        ///< `value`: the particle id frames inspect; < 0 = none
+    SetPush,           ///< `push`: the user's push from the next step on (inactive = none)
   };
   Kind kind = Kind::Pause;
   RunConfig config;                 ///< Reset (params only) and Load
@@ -35,6 +37,7 @@ struct Command {
   std::vector<std::string> names;
   double value = 0.0;
   bool flag = false;
+  Push push;                        ///< SetPush
 };
 
 /// What the engine thread takes in one go.
