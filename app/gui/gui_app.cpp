@@ -351,8 +351,8 @@ int run_gui(const GuiOptions& o) {
   if (recorder.frames() > 0) std::printf("sph-gui: %d frames in %s/\n", recorder.frames(), recorder.dir().c_str());
   if (f) std::printf("sph-gui: last state: step %lld, t = %.9g\n", static_cast<long long>(f->snapshot.step), f->snapshot.t);
   if (f) report_view(view, *f);
-  if (f && f->push_events > 0)
-    std::printf("sph-gui: pushes: %zu changes logged, %s; momentum P = (%.6g, %.6g)\n", f->push_events,
+  if (f && !f->pushes.empty())
+    std::printf("sph-gui: pushes: %zu changes logged, %s; momentum P = (%.6g, %.6g)\n", f->pushes.size(),
                 f->push.active() ? "one acting" : "none acting", f->diagnostics.P[0], f->diagnostics.P[1]);
   if (const StepperFrame* shown = state.shown_frame(); shown && shown != f)
     std::printf("sph-gui: view shows stored frame %d of %zu: step %lld, t = %.9g\n", state.scrub + 1, state.ring.size(),

@@ -93,7 +93,8 @@ struct StepperFrame {
   /// at every new state otherwise.
   std::optional<Inspection> inspection;
   Push push;                       ///< the user's push acting now (World::push; inactive = none)
-  std::size_t push_events = 0;     ///< push changes logged by this World so far (World::pushes)
+  std::vector<PushEvent> pushes;   ///< push changes logged by this World so far, with their steps
+                                   ///< (World::pushes): a PushReplay of them repeats the run
 };
 
 class Stepper {

@@ -310,7 +310,7 @@ void EngineLoop::publish(int record_index) {
     f.warnings = world_->warnings();
     f.config = world_->config();
     f.push = world_->push();
-    f.push_events = world_->pushes().size();
+    f.pushes = world_->pushes();
   } else {
     f.snapshot = Snapshot{};
     f.diagnostics = Diagnostics{};
@@ -324,7 +324,7 @@ void EngineLoop::publish(int record_index) {
     f.warnings.clear();
     f.config = cfg_;
     f.push = Push{};
-    f.push_events = 0;
+    f.pushes.clear();
   }
   f.params_version = adopted_;
   f.history = history_.samples();
