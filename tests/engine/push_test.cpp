@@ -3,6 +3,7 @@
 // evaluation of every integrator, is logged with its step, and a replay of the log repeats the run bit for bit.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -136,6 +137,31 @@ TEST(Push, RecordedPushesReplayBitForBit) {
     EXPECT_TRUE(r.done());
     expect_same_state(live, replay);
   }
+}
+
+/// The particle inspector names the push as a term of its own, and its total acceleration is the one an
+/// evaluation of the same state stores (the push included).
+TEST(Push, InspectorShowsThePushTerm) {
+  World w(small_gresho());
+  w.set_push(corner_push(1.0, 0.0));
+  w.step();
+  w.evaluate();  // the stored rates of this state (leapfrog's last ones are of the predicted velocity)
+  const Particles& p = w.particles();
+  std::size_t k = p.fluid();
+  for (std::size_t i = 0; i < p.fluid() && k == p.fluid(); ++i)  // a particle near the corner
+    if (std::abs(std::abs(p.x[0][i]) - 0.5) < 0.05 && std::abs(std::abs(p.x[1][i]) - 0.5) < 0.05) k = i;
+  ASSERT_LT(k, p.fluid());
+  const std::optional<Inspection> in = w.inspect(p.id[k]);
+  ASSERT_TRUE(in);
+  const auto term = std::find_if(in->terms.begin(), in->terms.end(),
+                                 [](const InspectTerm& t) { return t.name == "push (right drag)"; });
+  ASSERT_NE(term, in->terms.end());
+  const Vec3 expected = push_acceleration(corner_push(1.0, 0.0), w.domain(), 2, p.pos(k), p.vel(k));
+  EXPECT_GT(expected.x, 0.0);
+  EXPECT_EQ(term->a.x, expected.x);
+  EXPECT_EQ(term->a.y, expected.y);
+  EXPECT_NEAR(in->a_total.x, in->a_stored.x, 1e-9 * (std::abs(in->a_stored.x) + expected.x));
+  EXPECT_NEAR(in->a_total.y, in->a_stored.y, 1e-9 * (std::abs(in->a_stored.y) + expected.x));
 }
 
 /// Momentum change of a push on gas at rest, with every integrator: internal forces conserve momentum,

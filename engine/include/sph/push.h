@@ -10,6 +10,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "sph/vec.h"
+
 namespace sph {
 
 class Particles;
@@ -35,6 +37,9 @@ struct PushEvent {
 
 /// The compact weight w(q) = (1 - q^2)^2 for 0 <= q < 1, 0 beyond (dimensionless).
 double push_weight(double q);
+
+/// a_push of one particle at x moving with v [length/time^2] (zero beyond R, and in the axes >= dim).
+Vec3 push_acceleration(const Push& push, const Domain& d, int dim, const Vec3& x, const Vec3& v);
 
 /// Adds a_push (above) to the accelerations of the fluid particles of p [length/time^2]; periodic axes
 /// of d measure distances by the nearest image. Does nothing for an inactive push.

@@ -15,25 +15,35 @@ double push_weight(double q) {
   return s * s;
 }
 
+Vec3 push_acceleration(const Push& push, const Domain& d, int dim, const Vec3& x, const Vec3& v) {
+  const double xs[3] = {x.x, x.y, x.z}, vs[3] = {v.x, v.y, v.z};
+  double r2 = 0.0;
+  for (int k = 0; k < dim; ++k) {
+    double dx = xs[k] - push.x[k];
+    if (d.bc[k] == Boundary::Periodic) {  // nearest image
+      const double L = d.hi[k] - d.lo[k];
+      dx -= L * std::nearbyint(dx / L);
+    }
+    r2 += dx * dx;
+  }
+  const double w = push.active() ? push_weight(std::sqrt(r2) / push.radius) : 0.0;
+  double a[3] = {0.0, 0.0, 0.0};
+  if (w != 0.0)
+    for (int k = 0; k < dim; ++k) a[k] = w * (push.v[k] - vs[k]) / push.tau;
+  return {a[0], a[1], a[2]};
+}
+
 void add_push_acceleration(const Push& push, const Domain& d, Particles& p) {
   if (!push.active()) return;
   const int dim = p.dim();
   const std::size_t n = p.fluid();
-  const double inv_r = 1.0 / push.radius, inv_tau = 1.0 / push.tau;
 #pragma omp parallel for schedule(static) if (p.size() >= kParallelMin)
   for (std::size_t i = 0; i < n; ++i) {
-    double r2 = 0.0;
-    for (int k = 0; k < dim; ++k) {
-      double dx = p.x[k][i] - push.x[k];
-      if (d.bc[k] == Boundary::Periodic) {  // nearest image
-        const double L = d.hi[k] - d.lo[k];
-        dx -= L * std::nearbyint(dx / L);
-      }
-      r2 += dx * dx;
-    }
-    const double w = push_weight(std::sqrt(r2) * inv_r);
-    if (w == 0.0) continue;
-    for (int k = 0; k < dim; ++k) p.a[k][i] += w * (push.v[k] - p.v[k][i]) * inv_tau;
+    const Vec3 a = push_acceleration(push, d, dim, p.pos(i), p.vel(i));
+    if (a.x == 0.0 && a.y == 0.0 && a.z == 0.0) continue;
+    p.a[0][i] += a.x;
+    if (dim > 1) p.a[1][i] += a.y;
+    if (dim > 2) p.a[2][i] += a.z;
   }
 }
 
