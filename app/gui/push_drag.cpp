@@ -18,6 +18,10 @@ double auto_push_tau(double dt, double t_end) {
   return std::isfinite(t_end) && t_end > 0.0 ? 1e-3 * t_end : 1e-3;
 }
 
+double auto_push_vmax(double dt, double cfl, double h) {
+  return dt > 0.0 && cfl > 0.0 && h > 0.0 ? 0.3 * cfl * h / dt : 0.0;
+}
+
 void see_frame_time(PushDrag& d, double t, double wall) {
   if (d.rate_t < 0.0 || t < d.rate_t) {  // first frame, or a new World
     d.rate_t = t;
@@ -55,7 +59,7 @@ Push drag_push(const PushDrag& d, double R, double tau) {
   p.tau = tau;
   if (d.rate > 0.0) {
     double vx = d.vx / d.rate, vy = d.vy / d.rate;
-    const double v = std::hypot(vx, vy), vmax = 4.0 * R / tau;
+    const double v = std::hypot(vx, vy), vmax = d.vmax > 0.0 ? std::min(d.vmax, 4.0 * R / tau) : 4.0 * R / tau;
     if (v > vmax) {
       vx *= vmax / v;
       vy *= vmax / v;

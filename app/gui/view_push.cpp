@@ -2,6 +2,8 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+
 #include "camera.h"
 #include "sph/snapshot.h"
 
@@ -43,6 +45,10 @@ void push_particles(GuiState& s, const ParticleView& view, const Rect& r) {
     d.held = true;
     d.R = d.radius > 0.f ? d.radius : auto_push_radius(snap);
     d.T = d.tau > 0.f ? d.tau : auto_push_tau(f->diagnostics.dt, f->config.params.time.t_end);
+    double h = 0.0;  // the fluid's largest smoothing length
+    for (std::size_t i = 0; i < snap.h.size(); ++i)
+      if (!snap.is_wall(i)) h = std::max(h, static_cast<double>(snap.h[i]));
+    d.vmax = auto_push_vmax(f->diagnostics.dt, f->config.params.time.cfl, h);
   }
   const double ppw = (x1 - x0) / (b[1] - b[0]);  // framebuffer pixels per length
   const double wx = b[0] + (mx - x0) * (b[1] - b[0]) / (x1 - x0), wy = b[2] + (my - y0) * (b[3] - b[2]) / (y1 - y0);
@@ -57,7 +63,8 @@ void push_particles(GuiState& s, const ParticleView& view, const Rect& r) {
   const ImVec2 c(io.MousePos.x, io.MousePos.y);
   dl->AddCircle(c, static_cast<float>(d.R * ppw) / sx, IM_COL32(255, 255, 255, 220), 64, 2.f);
   dl->AddCircleFilled(c, 3.f, IM_COL32(255, 255, 255, 220));
-  ImGui::SetTooltip("push: R = %.3g, tau = %.3g, v = (%.3g, %.3g)", d.R, d.T, p.v[0], p.v[1]);
+  ImGui::SetTooltip("push: R = %.3g, tau = %.3g, v = (%.3g, %.3g), |v| <= %.3g", d.R, d.T, p.v[0], p.v[1],
+                    d.vmax > 0.0 ? std::min(d.vmax, 4.0 * d.R / d.T) : 4.0 * d.R / d.T);
 }
 
 bool window_pos_of_world(const ParticleView& view, const Rect& r, double x, double y, float* wx, float* wy) {

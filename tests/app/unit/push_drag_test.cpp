@@ -1,5 +1,5 @@
 // The right-drag push without ImGui (app/gui/push_drag.h): automatic R and tau, the pace measured from
-// frame times, the mouse velocity turned into simulated units and capped at 4 R / tau.
+// frame times, the mouse velocity turned into simulated units and capped (0.3 cfl h / dt and 4 R / tau).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -46,6 +46,11 @@ TEST(PushDrag, MouseVelocityInSimulatedUnitsCapped) {
   p = drag_push(d, 0.1, 0.5);  // cap 4 R / tau = 0.8: |v| = 0.894 scaled down
   EXPECT_NEAR(std::hypot(p.v[0], p.v[1]), 0.8, 1e-12);
   EXPECT_NEAR(p.v[0] / p.v[1], -2.0, 1e-12);
+  d.vmax = auto_push_vmax(0.01, 0.25, 0.04);  // 0.3 x 0.25 x 0.04 / 0.01 = 0.3: below 4 R / tau
+  EXPECT_DOUBLE_EQ(d.vmax, 0.3);
+  p = drag_push(d, 0.1, 0.5);
+  EXPECT_NEAR(std::hypot(p.v[0], p.v[1]), 0.3, 1e-12);
+  EXPECT_EQ(auto_push_vmax(0.0, 0.25, 0.04), 0.0);  // before the first step: no limit of its own
   d.rate = 0.0;  // unknown pace: holds the particles (v = 0)
   p = drag_push(d, 0.1, 1.0);
   EXPECT_EQ(p.v[0], 0.0);
