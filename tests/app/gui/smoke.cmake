@@ -196,7 +196,8 @@ endif()
 # Push (MODE push): a right drag on the Gresho box's still corner (y = 0.42, x from 0.1 to 0.45 over 60
 # frames; --push-drag is the mouse through ImGui's input, as a user's) pushes the gas along +x: while the
 # button is held a push acts, after the release none; the total momentum (0 at the start by symmetry) then
-# points along the drag: P_x > 0.01 (measured 0.029) and |P_y| < 0.01 (measured 0.005).
+# points along the drag: P_x > 0.01 (measured 0.025-0.030; the pace is measured from wall time) and |P_y| < 0.01
+# (measured 0.004-0.005).
 if(MODE STREQUAL "push")
   foreach(quit 75 130)
     execute_process(COMMAND ${XVFB_RUN} -a ${GUI} --scene gresho --set scene.n_side=32 --set time.t_end=100 --threads 1
