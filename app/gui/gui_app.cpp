@@ -32,6 +32,7 @@
 #include "sph/stepper.h"
 #include "overrides_text.h"
 #include "view_picking.h"
+#include "view_push.h"
 #include "view_scene.h"
 #include "view_target.h"
 #include "ui_look.h"
@@ -98,6 +99,23 @@ void click_hook(const GuiOptions& o, long long frame, const ParticleView& view, 
       io.MousePos = ImVec2((*pos)[0], (*pos)[1]);
       io.MouseDown[0] = frame == at;
     }
+  }
+}
+
+/// Test hook --push-drag F0:F1:X0,Y0:X1,Y1: the right button held from displayed frame F0 to F1 while the
+/// mouse moves evenly from world point (X0, Y0) to (X1, Y1) [length], released at F1.
+void push_drag_hook(const GuiOptions& o, long long frame, const ParticleView& view, const Rect& r) {
+  for (const std::string& d : o.push_drags) {
+    long long f0 = 0, f1 = 0;
+    double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    if (std::sscanf(d.c_str(), "%lld:%lld:%lf,%lf:%lf,%lf", &f0, &f1, &x0, &y0, &x1, &y1) != 6) continue;
+    if (frame < f0 || frame > f1) continue;
+    const double u = f1 > f0 ? static_cast<double>(frame - f0) / static_cast<double>(f1 - f0) : 1.0;
+    float wx = 0, wy = 0;
+    if (!window_pos_of_world(view, r, x0 + u * (x1 - x0), y0 + u * (y1 - y0), &wx, &wy)) continue;
+    ImGuiIO& io = ImGui::GetIO();
+    io.MousePos = ImVec2(wx, wy);
+    io.MouseDown[1] = frame < f1;
   }
 }
 
@@ -259,6 +277,7 @@ int run_gui(const GuiOptions& o) {
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     click_hook(o, stats.frames(), view, last_view_rect);
+    push_drag_hook(o, stats.frames(), view, last_view_rect);
     ImGui::NewFrame();
     const ImGuiIO& io = ImGui::GetIO();
     Layout L = compute_layout(static_cast<int>(io.DisplaySize.x), static_cast<int>(io.DisplaySize.y),
@@ -270,6 +289,7 @@ int run_gui(const GuiOptions& o) {
     const StepperFrame* shown = state.shown_frame();  // a stored frame while scrubbing
     if (shown) view.interact(to_framebuffer(L.view), shown->snapshot, &state.view);
     if (shown) pick_particles(state, view, to_framebuffer(L.view));
+    push_particles(state, view, to_framebuffer(L.view));
     if (!f || state.building()) {  // World construction can take seconds (10^5 particles)
       const std::string text = "building " + state.scene_name() + " ...";
       ImGui::GetBackgroundDrawList()->AddText(ImVec2(L.view.x + 20.f, L.view.y + L.view.h - 2.f * ImGui::GetFontSize()),
@@ -335,6 +355,9 @@ int run_gui(const GuiOptions& o) {
   if (recorder.frames() > 0) std::printf("sph-gui: %d frames in %s/\n", recorder.frames(), recorder.dir().c_str());
   if (f) std::printf("sph-gui: last state: step %lld, t = %.9g\n", static_cast<long long>(f->snapshot.step), f->snapshot.t);
   if (f) report_view(view, *f);
+  if (f && !f->pushes.empty())
+    std::printf("sph-gui: pushes: %zu changes logged, %s; momentum P = (%.6g, %.6g)\n", f->pushes.size(),
+                f->push.active() ? "one acting" : "none acting", f->diagnostics.P[0], f->diagnostics.P[1]);
   if (const StepperFrame* shown = state.shown_frame(); shown && shown != f)
     std::printf("sph-gui: view shows stored frame %d of %zu: step %lld, t = %.9g\n", state.scrub + 1, state.ring.size(),
                 static_cast<long long>(shown->snapshot.step), shown->snapshot.t);

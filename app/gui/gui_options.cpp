@@ -47,6 +47,9 @@ int parse_options(int argc, char** argv, GuiOptions* out) {
                "test hook: quit (after --screenshot) once the run has stopped at t_end and the view shows it");
   app.add_option("--click-particle", o.click_particles,
                  "test hook: FRAME:ID clicks particle ID's dot in the view at displayed frame FRAME (repeatable)");
+  app.add_option("--push-drag", o.push_drags,
+                 "test hook: F0:F1:X0,Y0:X1,Y1 right-drags (a push) from world point X0,Y0 to X1,Y1 over displayed "
+                 "frames F0 to F1 (repeatable)");
   app.add_option("--tap-keys", o.tap_keys,
                  "test hook: FRAME:KEYS taps each key of KEYS (S, R, ' ' ...; + and - are Ctrl+= and Ctrl+-) at displayed "
                  "frame FRAME (repeatable)");
@@ -89,6 +92,17 @@ int parse_options(int argc, char** argv, GuiOptions* out) {
     if (colon == std::string::npos || colon == 0 || colon + 1 == c.size() ||
         c.find_first_not_of("0123456789:") != std::string::npos || c.find(':', colon + 1) != std::string::npos) {
       std::fprintf(stderr, "sph-gui: --click-particle %s: expected FRAME:ID, e.g. 20:300\n", c.c_str());
+      return 2;
+    }
+  }
+  for (const std::string& d : o.push_drags) {
+    long long f0 = 0, f1 = 0;
+    double x[4];
+    char tail = 0;
+    if (std::sscanf(d.c_str(), "%lld:%lld:%lf,%lf:%lf,%lf%c", &f0, &f1, &x[0], &x[1], &x[2], &x[3], &tail) != 6 ||
+        f0 < 0 || f1 <= f0) {
+      std::fprintf(stderr, "sph-gui: --push-drag %s: expected F0:F1:X0,Y0:X1,Y1 with F0 < F1, e.g. 30:90:0.2,0.4:0.45,0.4\n",
+                   d.c_str());
       return 2;
     }
   }

@@ -35,6 +35,9 @@ struct GuiOptions {
   /// Test hook: FRAME:ID presses the left mouse button on particle ID's dot at displayed frame FRAME and
   /// releases it at the next (a click through the view's picking, as a user's).
   std::vector<std::string> click_particles;
+  /// Test hook: F0:F1:X0,Y0:X1,Y1 holds the right button from displayed frame F0 to F1 while the mouse
+  /// moves evenly from world point (X0, Y0) to (X1, Y1), as a user's push (view_push.h).
+  std::vector<std::string> push_drags;
   std::string lesson;                ///< open this lesson file (assets/lessons/*.json)
   int lesson_step = 1;               ///< on this step (1-based)
   bool lesson_check = false;         ///< run the step's check at once; its result is printed at exit

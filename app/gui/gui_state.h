@@ -9,6 +9,7 @@
 
 #include "sph/config.h"
 #include "lesson_ui.h"
+#include "push_drag.h"
 #include "recent_files.h"
 #include "snapshot_ring.h"
 #include "ui_look.h"
@@ -86,6 +87,9 @@ class GuiState {
   std::string state_path = "state.sph";  ///< the state panel's file
   /// The particle inspector shows particle `id` (< 0: closes it).
   void inspect(std::int64_t id);
+  /// The user's push on run A from its next step (sph/push.h); an inactive push ends it.
+  void set_push(const Push& p) { stepper_.set_push(p); }
+  PushDrag push;                   ///< the right-drag push: its settings and the drag in progress
   std::int64_t inspect_id = -1;    ///< as last sent (-1: the inspector is closed)
   std::string compare_text = "kernel.type=M6";  ///< the compare panel's overrides, comma-separated
   double real_time_factor = 0.0;   ///< as last sent (0 = as fast as possible)

@@ -65,6 +65,32 @@ void overlay_toggles(const Snapshot& snap, render::ViewSettings& v) {
                       "(Greyed out: this scene has none.)");
 }
 
+// The right-drag push's radius R [length] and relaxation time tau [time]; 0 = automatic.
+void push_settings(GuiState& s, const StepperFrame& f) {
+  PushDrag& d = s.push;
+  const double R = d.radius > 0.f ? d.radius : auto_push_radius(f.snapshot);
+  const double tau = d.tau > 0.f ? d.tau : auto_push_tau(f.diagnostics.dt, f.config.params.time.t_end);
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.f);
+  float r = static_cast<float>(R);
+  if (ImGui::DragFloat("push R", &r, static_cast<float>(0.01 * auto_push_radius(f.snapshot)), 0.f, 1e30f,
+                       d.radius > 0.f ? "%.4g" : "%.4g (auto)"))
+    d.radius = std::max(r, 0.f);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Right drag on the plane pushes the fluid within R of the cursor [length]:\n"
+                      "a = w(r/R) (v_mouse - v) / tau, w(q) = (1 - q^2)^2: the particles are dragged along with\n"
+                      "the mouse. Auto: a tenth of the box's smaller side. 0 = auto.");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.f);
+  float t = static_cast<float>(tau);
+  if (ImGui::DragFloat("tau", &t, static_cast<float>(0.01 * tau), 0.f, 1e30f, d.tau > 0.f ? "%.4g" : "%.4g (auto)"))
+    d.tau = std::max(t, 0.f);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("How fast the pushed particles take the mouse's velocity [time]: smaller drags harder\n"
+                      "(the step is then at most cfl x tau). Auto: 20 of the current steps. 0 = auto.");
+  ImGui::SameLine();
+  if (ImGui::SmallButton("auto##push")) d.radius = d.tau = 0.f;
+}
+
 }  // namespace
 
 void panel_display(GuiState& s) {
@@ -169,7 +195,8 @@ void panel_display(GuiState& s) {
       v.orbit = render::OrbitCamera{};
     }
     ImGui::SameLine();
-    ImGui::TextDisabled(snap.dim == 2 ? "drag: pan, wheel: zoom" : "drag: orbit, wheel: zoom");
+    ImGui::TextDisabled(snap.dim == 2 ? "drag: pan, right drag: push, wheel: zoom" : "drag: orbit, wheel: zoom");
+    if (snap.dim == 2) push_settings(s, *f);
   }
   ImGui::SliderInt("text size", &v.text_scale, 0, 4, v.text_scale == 0 ? "auto" : "%d x");
   // projector mode: the whole UI (ui_look.h), applied by the main loop between frames

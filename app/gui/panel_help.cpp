@@ -25,6 +25,7 @@ constexpr const char* kKeys[][2] = {
     {"Left / Right (paused)", "scrub back / forward through the last 240 frames (view only)"},
     {"left drag (2D)", "pan the view"},
     {"left drag (3D)", "orbit the camera"},
+    {"right drag (2D plane)", "push: drag the fluid within R of the cursor along (circle; R, tau: Display)"},
     {"mouse wheel", "zoom the view"},
     {"left click on a particle", "open the particle inspector on it"},
     {"hover a particle", "its id and the coloured field's value"},

@@ -18,6 +18,7 @@
 #include "sph/density.h"
 #include "sph/diagnostics.h"
 #include "sph/inspect.h"
+#include "sph/push.h"
 #include "sph/run_warning.h"
 #include "sph/snapshot.h"
 
@@ -92,6 +93,9 @@ struct StepperFrame {
   /// times a second and within a tenth of the engine's time (its `step` says which state it explains),
   /// at every new state otherwise.
   std::optional<Inspection> inspection;
+  Push push;                       ///< the user's push acting now (World::push; inactive = none)
+  std::vector<PushEvent> pushes;   ///< push changes logged by this World so far, with their steps
+                                   ///< (World::pushes): a PushReplay of them repeats the run
 };
 
 class Stepper {
@@ -145,6 +149,9 @@ class Stepper {
   /// configuration, whose params are posted: the return value is their version). A state that does not
   /// fit keeps the old World and reports the error.
   std::uint64_t load_state(const std::string& path, const RunConfig& cfg, const std::string& state);
+  /// The user's push (sph/push.h) on run A from its next step on; an inactive push ends it. Logged by
+  /// the World with its step (World::pushes), so the run can be replayed.
+  void set_push(const Push& push);
 
   // --- channel 3: snapshots --------------------------------------------------------------------------
   /// The newest published frame, or nullptr before the first. The frame stays valid and unchanged until

@@ -16,6 +16,7 @@
 #include "sph/integrator.h"
 #include "sph/kernel.h"
 #include "sph/neighbours.h"
+#include "sph/push.h"
 #include "sph/run_warning.h"
 #include "sph/snapshot.h"
 
@@ -123,6 +124,15 @@ class World {
   /// one evaluation). nullopt if there is no such particle.
   std::optional<Inspection> inspect(std::int64_t id) const;
 
+  /// Sets the user's push (sph/push.h) from the next step on, at each of its force evaluations; an
+  /// inactive push ends it. A change is logged with the step it applies from (pushes()), re-evaluates the
+  /// rates before the next step and restarts the energy guards (a push adds or removes energy). While a
+  /// push is active, dt <= cfl x tau. Setting the push already set changes nothing.
+  void set_push(const Push& push);
+  const Push& push() const { return push_; }
+  /// Every push change so far, in order: a PushReplay of them repeats the run.
+  const std::vector<PushEvent>& pushes() const { return pushes_; }
+
   /// What the run has tolerated so far (empty for a clean run), in the order first found.
   const std::vector<RunWarning>& warnings() const { return warnings_; }
 
@@ -217,6 +227,8 @@ class World {
   std::unique_ptr<TeamChooser> team_;
   bool adaptive_threads_ = true;
   int last_team_ = 1;
+  Push push_;                          ///< the user's push (inactive unless set)
+  std::vector<PushEvent> pushes_;      ///< its changes, with their steps
   bool current_ = false;      ///< rates belong to the current state
   bool rates_known_ = false;  ///< signal speeds from some evaluation under the current params (for dt)
 };

@@ -155,6 +155,9 @@ void EngineLoop::apply(const Command& c) {
       inspect_.set_id(std::isfinite(c.value) && c.value >= 0.0 ? static_cast<std::int64_t>(c.value) : -1);
       inspect_b_.set_id(inspect_.id());
       break;
+    case K::SetPush:
+      if (world_) world_->set_push(c.push);  // run A only: the comparison's run B is not pushed
+      break;
   }
 }
 
@@ -317,6 +320,8 @@ void EngineLoop::publish(int record_index) {
     f.density = world_->density_stats();
     f.warnings = world_->warnings();
     f.config = world_->config();
+    f.push = world_->push();
+    f.pushes = world_->pushes();
   } else {
     f.snapshot = Snapshot{};
     f.diagnostics = Diagnostics{};
@@ -329,6 +334,8 @@ void EngineLoop::publish(int record_index) {
     f.density = DensityStats{};
     f.warnings.clear();
     f.config = cfg_;
+    f.push = Push{};
+    f.pushes.clear();
   }
   f.params_version = adopted_;
   f.history = history_.samples();

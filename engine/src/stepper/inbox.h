@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "sph/config.h"
+#include "sph/push.h"
 
 namespace sph::detail {
 
@@ -29,6 +30,7 @@ struct Command {
     SetInspect,        ///< `value`: the particle id frames inspect; < 0 = none
     SaveState,         ///< write a checkpoint of the World to the file `name` (sph/checkpoint.h)
     LoadState,         ///< build the World from `config` and take over the saved state `state` (from `name`)
+    SetPush,           ///< `push`: the user's push from the next step on (inactive = none)
   };
   Kind kind = Kind::Pause;
   RunConfig config;                 ///< Reset (params only) and Load
@@ -38,6 +40,7 @@ struct Command {
   double value = 0.0;
   bool flag = false;
   std::string state;                ///< LoadState: World::save_state bytes
+  Push push;                        ///< SetPush
 };
 
 /// What the engine thread takes in one go.

@@ -101,6 +101,12 @@ void Stepper::set_compare(const std::vector<std::string>& overrides) {
 }
 void Stepper::set_inspect(std::int64_t id) { impl_->inbox.push(make(Command::Kind::SetInspect, static_cast<double>(id))); }
 
+void Stepper::set_push(const Push& push) {
+  Command c = make(Command::Kind::SetPush);
+  c.push = push;
+  impl_->inbox.push(std::move(c));
+}
+
 const StepperFrame* Stepper::latest() {
   if (impl_->frames.acquire()) impl_->have_front = true;
   return impl_->have_front ? &impl_->frames.front() : nullptr;

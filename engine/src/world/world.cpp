@@ -227,7 +227,10 @@ void World::evaluate(double t_eval) {
       if (!done) { complete = false; break; }
     }
     rewrap();
-    if (complete) break;
+    if (complete) {
+      add_push_acceleration(push_, domain_, p_);  // a body force of its own, after the stages' accelerations
+      break;
+    }
     lists_valid_ = false;  // an h outgrew its list: new lists from the new h
     ++h_overflows_;
     if (attempt > 20)
@@ -236,6 +239,16 @@ void World::evaluate(double t_eval) {
   ++evaluations_;
   t_last_eval_ = t_eval;
   rates_known_ = true;
+}
+
+void World::set_push(const Push& push) {
+  const Push next = push.active() ? push : Push{};
+  if (next == push_) return;
+  push_ = next;
+  pushes_.push_back(PushEvent{step_, push_});
+  current_ = false;  // the rates of the current state change with the push
+  dt_first_ = 0.0;
+  energy_scale_ = -1.0;
 }
 
 double World::next_dt() {
@@ -258,6 +271,7 @@ double World::next_dt() {
     if (v > 0.0) dt_move = std::min(dt_move, h[i] / v);
   }
   dt = std::min(dt, dt_force);
+  if (push_.active()) dt = std::min(dt, push_.tau);  // relaxation towards v_push, resolved in time
   // Without forces or signal speeds (free streaming), no particle moves more than h in a step.
   if (dt == Stage::kNoLimit) dt = dt_move;
   return cfg_.params.time.cfl * dt;

@@ -62,6 +62,20 @@ std::optional<Inspection> World::inspect(std::int64_t id) const {
     t.dudt_scale = std::abs(d.dudt);
     out.terms.push_back(std::move(t));
   }
+  if (push_.active()) {  // the user's push: added after the stages (World::evaluate)
+    const Vec3 a = push_acceleration(push_, domain_, p_.dim(), e.p.pos(i), e.p.vel(i));
+    e.p.a[0][i] += a.x;
+    e.p.a[1][i] += a.y;
+    e.p.a[2][i] += a.z;
+    if (a.norm2() > 0.0) {
+      InspectTerm t;
+      t.name = "push (right drag)";
+      t.source = "a = w(r/R) (v_push - v) / tau, w(q) = (1 - q^2)^2 (sph/push.h)";
+      t.a = a;
+      t.a_scale = a.norm();
+      out.terms.push_back(std::move(t));
+    }
+  }
   out.a_total = {e.p.a[0][i], e.p.a[1][i], e.p.a[2][i]};
   out.dudt_total = out.has_energy ? e.p[Field::EnergyRate][i] : 0.0;
   return out;

@@ -8,7 +8,8 @@
 #          particle 410: the screenshot shows both runs and the inspector, the legend both L1 values,
 #          and the inspector's numbers are the engine's (INSPECT_CHECK);
 #   click: a click on a particle's dot opens the inspector on it;
-#   state: a checkpoint of `sph run` loads with --load-state at its step and time; a CSV given instead exits 3.
+#   state: a checkpoint of `sph run` loads with --load-state at its step and time; a CSV given instead exits 3;
+#   push:  a right drag (--push-drag) pushes the gas along the drag.
 file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT})
 
@@ -208,5 +209,39 @@ if(MODE STREQUAL "scrub")
   math(EXPR back "${CMAKE_MATCH_2} - ${CMAKE_MATCH_1}")
   if(NOT back EQUAL 5 OR CMAKE_MATCH_2 GREATER 240 OR CMAKE_MATCH_2 LESS 20)
     message(FATAL_ERROR "expected the frame 5 back from the newest of 20-240 stored (${back} back of ${CMAKE_MATCH_2})")
+  endif()
+endif()
+
+# Push (MODE push): a right drag on the Gresho box's still corner (y = 0.42, x from 0.1 to 0.45 over 60
+# frames; --push-drag is the mouse through ImGui's input, as a user's) pushes the gas along +x: while the
+# button is held a push acts, after the release none; the total momentum (0 at the start by symmetry) then
+# points along the drag: P_x > 0.01 (measured 0.025-0.030; the pace is measured from wall time) and |P_y| < 0.01
+# (measured 0.004-0.005).
+if(MODE STREQUAL "push")
+  foreach(quit 75 130)
+    execute_process(COMMAND ${XVFB_RUN} -a ${GUI} --scene gresho --set scene.n_side=32 --set time.t_end=100 --threads 1
+                    --push-drag 40:100:0.1,0.42:0.45,0.42 --quit-after-frames ${quit} --screenshot ${OUT}/push${quit}.png
+                    --config-dir ${OUT}/cfg RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err WORKING_DIRECTORY ${OUT})
+    message("${out}${err}")
+    if(NOT rc EQUAL 0 OR NOT out MATCHES "pushes: ([0-9]+) changes logged, (one|none) acting; momentum P = \\(([-0-9.e+]+), ([-0-9.e+]+)\\)")
+      message(FATAL_ERROR "expected the drag's pushes to be logged")
+    endif()
+    set(n ${CMAKE_MATCH_1})
+    set(acting ${CMAKE_MATCH_2})
+    set(px ${CMAKE_MATCH_3})
+    set(py ${CMAKE_MATCH_4})
+    if(n LESS 2)
+      message(FATAL_ERROR "expected the push to follow the mouse (${n} changes)")
+    endif()
+    if(quit EQUAL 75 AND NOT acting STREQUAL "one")
+      message(FATAL_ERROR "expected a push acting while the right button is held")
+    endif()
+  endforeach()
+  if(NOT acting STREQUAL "none")
+    message(FATAL_ERROR "expected no push after the release")
+  endif()
+  string(REGEX REPLACE "^-" "" apy "${py}")
+  if(NOT px GREATER 0.01 OR NOT apy LESS 0.01)  # if() compares numbers as doubles
+    message(FATAL_ERROR "expected momentum along the drag: P = (${px}, ${py})")
   endif()
 endif()
