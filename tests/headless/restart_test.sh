@@ -61,13 +61,14 @@ SCENES
   ok "resumed on 2 threads: every file identical" same "$work/t1" "$work/t2"
   ;;
 signals)
+  # the waits read diagnostics.csv.part: the file grows under that name until the run ends (README)
   run=(run dam_break --set scene.dx=0.05 --until 0.3 --threads 1 --quiet)
   "$sph" "${run[@]}" --out "$work/whole" 2> /dev/null; check "uninterrupted" 0 $?
   for sig in INT TERM; do
     d="$work/$sig"; want=$([ $sig = INT ] && echo 130 || echo 143)
     "$sph" "${run[@]}" --out "$d" 2> "$work/$sig.err" &
     pid=$!
-    for _ in $(seq 200); do [ "$(wc -l 2> /dev/null < "$d/diagnostics.csv" || echo 0)" -gt 100 ] && break; sleep 0.02; done
+    for _ in $(seq 200); do [ "$(wc -l 2> /dev/null < "$d/diagnostics.csv.part" || echo 0)" -gt 100 ] && break; sleep 0.02; done
     kill -$sig $pid; wait $pid; check "SIG$sig exit code" "$want" $?
     ok "SIG$sig: checkpoint written" test -s "$d/checkpoint.sph"
     ok "SIG$sig: says how to resume" grep -q "sph resume $d" "$work/$sig.err"
@@ -82,7 +83,7 @@ signals)
   d="$work/twice"
   "$sph" "${run[@]}" --out "$d" 2> /dev/null &
   pid=$!
-  for _ in $(seq 200); do [ "$(wc -l 2> /dev/null < "$d/diagnostics.csv" || echo 0)" -gt 100 ] && break; sleep 0.02; done
+  for _ in $(seq 200); do [ "$(wc -l 2> /dev/null < "$d/diagnostics.csv.part" || echo 0)" -gt 100 ] && break; sleep 0.02; done
   kill -INT $pid; kill -INT $pid; wait $pid; check "second SIGINT exit code" 130 $?
   ok "second SIGINT: no temporary checkpoint" test ! -e "$d/checkpoint.sph.tmp"
   if [ -e "$d/checkpoint.sph" ]; then
