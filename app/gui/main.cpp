@@ -8,7 +8,7 @@
 #include "sph/thread_wait.h"
 
 int main(int argc, char** argv) {
-  sph::prefer_sleeping_threads(argv);  // before any OpenMP use (sph/thread_wait.h)
+  sph::prefer_brief_spinning(argv);  // before any OpenMP use (sph/thread_wait.h)
   sph::gui::GuiOptions options;
   if (const int rc = sph::gui::parse_options(argc, argv, &options); rc >= 0) return rc;
   try {

@@ -291,10 +291,10 @@ int run_command(const RunOptions& opt, const ResumePoint* resume) {
     if (!opt.quiet) {
       const double psteps = static_cast<double>(world.steps()) * static_cast<double>(world.particles().size());
       std::printf("%s: t = %g after %lld steps, %zu particles, %.3f s wall, %.3g particle-steps/s, %d threads "
-                  "(the last step on %d; %s waiting)\n",
+                  "(the last step on %d; idle threads: %s)\n",
                   cfg.scene->name.c_str(), world.time(), static_cast<long long>(world.steps()),
                   world.particles().size(), wall, psteps / wall, omp_get_max_threads(), world.last_team(),
-                  thread_wait_policy());
+                  thread_wait_policy().c_str());
       if (world.has_reference()) {
         const auto& cols = world.reference_columns();
         const std::vector<double> vals = world.reference_values();

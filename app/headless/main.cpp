@@ -18,7 +18,7 @@
 #include "sph/thread_wait.h"
 
 int main(int argc, char** argv) {
-  sph::prefer_sleeping_threads(argv);  // before any OpenMP use (sph/thread_wait.h)
+  sph::prefer_brief_spinning(argv);  // before any OpenMP use (sph/thread_wait.h)
   using namespace sph::cli;
   CLI::App app{"sph: SPH sandbox, headless runs. `sph help SCENE` explains a scene, `sph params` every key.\n"
                "Exit codes: 0 ok, 1 internal error, 2 usage error, 3 invalid scene (unknown scene, malformed\n"

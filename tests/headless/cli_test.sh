@@ -32,12 +32,15 @@ for t in 1 2; do
   check "box_random --threads $t" 0 $?
 done
 ok "1 and 2 threads: identical particle files" cmp -s "$work/threads1/particles_00002.csv" "$work/threads2/particles_00002.csv"
-# idle threads sleep unless the user chose otherwise (sph/thread_wait.h: the program restarts itself once)
-env -u OMP_WAIT_POLICY "$sph" run sod --set scene.n_left=50 --until 0.01 --threads 2 --out "$work/wait" > "$work/wait.log"
+# idle threads spin briefly, then sleep, unless the user chose otherwise (sph/thread_wait.h: the program
+# restarts itself once)
+env -u OMP_WAIT_POLICY -u GOMP_SPINCOUNT "$sph" run sod --set scene.n_left=50 --until 0.01 --threads 2 --out "$work/wait" > "$work/wait.log"
 check "run without OMP_WAIT_POLICY" 0 $?
-ok "threads wait passively by default" grep -q "passive waiting" "$work/wait.log"
+ok "threads spin 20000 turns by default" grep -q "idle threads: spin 20000 turns, then sleep)" "$work/wait.log"
 OMP_WAIT_POLICY=active "$sph" run sod --set scene.n_left=50 --until 0.01 --threads 2 --out "$work/wait2" > "$work/wait2.log"
-ok "a wait policy the user set is kept" grep -q "active waiting" "$work/wait2.log"
+ok "a wait policy the user set is kept" grep -q "idle threads: active)" "$work/wait2.log"
+env -u OMP_WAIT_POLICY GOMP_SPINCOUNT=7 "$sph" run sod --set scene.n_left=50 --until 0.01 --threads 2 --out "$work/wait3" > "$work/wait3.log"
+ok "a spin count the user set is kept" grep -q "idle threads: spin 7 turns, then sleep)" "$work/wait3.log"
 # a liquid scene with walls: its own columns (no u), the kind of each particle, its reference's columns
 "$sph" run hydrostatic_tank --set scene.dx=0.1 --until 0.02 --set dt_out=0.01 --out "$work/tank" > /dev/null
 check "run hydrostatic_tank" 0 $?
