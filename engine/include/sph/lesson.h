@@ -63,5 +63,7 @@ Lesson load_lesson(const std::string& path);
 std::string lesson_text(const Lesson& lesson);
 /// One line stating a step's claim, e.g. "L1_rho at t = 0.2 falls by 1.5x each time scene.n_left goes 100 -> 200 -> 400".
 std::string claim_text(const LessonStep& step);
+/// The measured quantity of a check as written in its results: "L1_rho", "max(dE)", "growth(dE)".
+std::string metric_label(const LessonCheck& check);
 
 }  // namespace sph

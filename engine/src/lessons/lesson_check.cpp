@@ -41,9 +41,6 @@ double total_variation_vx(const World& w) {
   return tv;
 }
 
-/// "L1_rho", "max(dE)", "growth(dE)".
-std::string metric_label(const LessonCheck& k) { return k.reduce == "end" ? k.metric : k.reduce + "(" + k.metric + ")"; }
-
 std::string num(double v) {
   char b[32];
   std::snprintf(b, sizeof b, "%.4g", v);

@@ -20,9 +20,13 @@ std::string sets_text(const LessonSets& sets) {
 
 }  // namespace
 
+std::string metric_label(const LessonCheck& check) {
+  return check.reduce == "end" ? check.metric : check.reduce + "(" + check.metric + ")";
+}
+
 std::string claim_text(const LessonStep& step) {
   const LessonCheck& k = step.check;
-  const std::string m = k.reduce == "end" ? k.metric : k.reduce + "(" + k.metric + ")";
+  const std::string m = metric_label(k);
   const std::string at = k.until > 0.0 ? " at t = " + num(k.until) : " at t_end";
   const std::string margin = k.factor > 1.0 ? " by at least " + num(k.factor) + "x" : "";
   switch (k.type) {
