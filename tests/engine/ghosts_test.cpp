@@ -359,5 +359,18 @@ TEST(Boundaries, WallCrossingsAreCountedAndEscapesFound) {
   EXPECT_EQ(none.escaped, 0u);
 }
 
+// A margin many times the periodic box (h of a blown-up run) is refused before the ghosts are allocated:
+// the soak test found an inspection of such a state building 15 million ghosts of 256 particles. A margin of
+// a few box lengths (tiny boxes) still gets all its images.
+TEST(Ghosts, AMarginFarBeyondThePeriodicBoxIsRefused) {
+  const Domain d = periodic_box(2);
+  Particles p = cloud(2, 256, d, 7);
+  EXPECT_THROW(make_ghosts(d, 1000.0, p), GhostOverflow);
+  EXPECT_EQ(p.total(), p.size());  // nothing allocated
+  Particles q = cloud(2, 256, d, 7);
+  ASSERT_NO_THROW(make_ghosts(d, 2.5, q));
+  EXPECT_GT(q.total(), 256u * 9u);  // at least the 3 x 3 images of the box around it (lengths 2 and 1)
+}
+
 }  // namespace
 }  // namespace sph

@@ -1,10 +1,12 @@
 // The checks that keep a run from going bad silently (engine/src/world/world_checks.cpp): on Sod, a
 // degraded run (forward Euler, cfl = 0.7) is warned about by name and a run at cfl = 0.9 stops before
 // its energy is garbage; a clean run has no warnings; an h solve that stops converging mid-run and a
-// run past the time its reference applies to are warned about, naming the particle or the time.
+// run past the time its reference applies to are warned about, naming the particle or the time; a state
+// beyond single precision (what snapshots and outputs hold) stops the run.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "sph/world.h"
@@ -107,6 +109,30 @@ TEST(WorldChecks, ARunPastItsReferenceIsWarnedAbout) {
   // at the default [-0.3, 1] the reference applies to the end
   World wide(RunConfig::from_scene("toro1"));
   EXPECT_GT(wide.reference()->valid_until(), wide.params().time.t_end);
+}
+
+// Found by the stepper's soak test: a dam break at a fixed step of 10 s (forward Euler) reached Tait
+// pressures above 3.4e38 Pa while every double stayed finite, and its frames showed p = inf without a
+// divergence. Every state a step completes now fits the floats of snapshots and outputs, or the run stops.
+TEST(WorldChecks, AStateBeyondSinglePrecisionStopsTheRun) {
+  RunConfig cfg = RunConfig::from_scene("dam_break");
+  cfg.set("scene.dx", "0.1", "test");
+  cfg.set("time.integrator", "euler", "test");
+  cfg.set("time.dt", "10", "test");
+  World w(cfg);
+  std::string why;
+  try {
+    for (int s = 0; s < 200; ++s) {
+      w.step();
+      const Snapshot snap = w.snapshot();
+      for (const auto& f : snap.fields)
+        for (float v : f.values) ASSERT_TRUE(std::isfinite(v)) << f.name << " at step " << w.steps() << " is " << v;
+    }
+  } catch (const DivergedError& e) {
+    why = e.what();
+  }
+  ASSERT_FALSE(why.empty()) << "200 steps of 10 s did not stop";
+  std::printf("%s\n", why.c_str());
 }
 
 }  // namespace

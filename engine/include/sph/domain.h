@@ -2,6 +2,7 @@
 // fictitious mirror particles (seed 000 §4.2.1) are both realised by ghost particles appended after the
 // real ones, so the neighbour search and the physics loops never special-case a boundary.
 #pragma once
+#include <stdexcept>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -19,9 +20,17 @@ struct Domain {
   double length(int k) const { return hi[k] - lo[k]; }
 };
 
+/// More ghosts than kMaxGhostsPerParticle per real particle (plus a few hundred for tiny sets): the margin,
+/// i.e. h, has outgrown a periodic box many times over, which only a blown-up run reaches.
+struct GhostOverflow : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+inline constexpr std::size_t kMaxGhostsPerParticle = 64;
+
 /// Rebuild the ghost particles for every real particle within `margin` of a periodic or wall boundary
 /// (corners included). Sets positions, ids, kinds, ghost_src and ghost_flip; the state is copied by
 /// copy_ghost_velocity and copy_ghost_field. Deterministic: ghosts are appended axis by axis in particle order.
+/// Throws GhostOverflow (before allocating them) when the ghosts would exceed the bound above.
 void make_ghosts(const Domain& d, double margin, Particles& p);
 
 /// Moves every ghost with its source (the transform make_ghosts recorded): the ghosts of lists kept

@@ -146,6 +146,10 @@ class World {
   /// that follow are bitwise those the saved world would have taken. Throws CheckpointError (naming
   /// `what`) if the state does not fit this world; the world is then unusable and must be dropped.
   void restore_state(const std::string& bytes, const std::string& what);
+  /// The check after every step, on demand (e.g. for a restored state, which may have been saved from a
+  /// diverged run): throws DivergedError if a position, velocity, density, h, u or P is non-finite or
+  /// beyond single precision.
+  void check_state() const { check_finite(); }
 
  private:
   StageContext context() const;

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstdio>
 #include "core/parallel.h"
 #include <vector>
 
@@ -21,7 +22,14 @@ struct Ghost {
 
 void make_ghosts(const Domain& d, double margin, Particles& p) {
   const std::size_t n = p.size();
+  const std::size_t most = kMaxGhostsPerParticle * n + 512;
   std::vector<Ghost> g;
+  auto too_many = [&](int k) {
+    char what[200];
+    std::snprintf(what, sizeof what, "the ghost layer (margin %.3g along axis %d of length %.3g) would hold over %zu "
+                  "copies of the %zu particles: h has outgrown the box", margin, k, d.length(k), kMaxGhostsPerParticle, n);
+    throw GhostOverflow(what);
+  };
   // Each axis sees the real particles and the ghosts made for the previous axes (this fills corners).
   auto visit = [&](std::size_t count, auto&& fn) {
     for (std::size_t j = 0; j < count; ++j) {
@@ -34,6 +42,8 @@ void make_ghosts(const Domain& d, double margin, Particles& p) {
     const double lo = d.lo[k], hi = d.hi[k], L = hi - lo;
     if (d.bc[k] == Boundary::Periodic) {
       const int images = static_cast<int>(std::ceil(margin / L));
+      // every particle gets about 2 margin/L images on this axis: refuse before allocating them
+      if (!(2.0 * margin / L * static_cast<double>(count) <= static_cast<double>(most))) too_many(k);
       visit(count, [&](Ghost s) {
         const double xk = s.x[k];
         for (int m = 1; m <= images; ++m) {
@@ -50,6 +60,7 @@ void make_ghosts(const Domain& d, double margin, Particles& p) {
       });
     }
   }
+  if (g.size() > most) too_many(p.dim() - 1);
   p.resize_total(n + g.size());
   for (std::size_t i = 0; i < g.size(); ++i) {
     for (int k = 0; k < 3; ++k) p.x[k][n + i] = g[i].x[k];

@@ -2,11 +2,18 @@
 
 namespace sph::detail {
 
-bool CompareRun::start(const RunConfig& a, const std::vector<std::string>& overrides, std::string* err) {
+bool CompareRun::start(const RunConfig& a, const std::vector<std::string>& overrides, std::string* err,
+                       const std::string* state) {
   stop();
   try {
+    if (state)  // a scene value builds other particles, which a loaded state replaces
+      for (const std::string& o : overrides)
+        if (o.rfind("scene.", 0) == 0)
+          throw ConfigError("its override " + o + " changes the initial particles, which the loaded state replaces");
     world_ = std::make_unique<World>(fork_config(a, overrides));
+    if (state) world_->restore_state(*state, "the loaded state, for run B");
   } catch (const std::exception& e) {
+    world_.reset();
     *err = std::string("compare: run B cannot be built: ") + e.what();
     return false;
   }

@@ -19,11 +19,15 @@ class CompareRun {
   const World* world() const { return world_.get(); }
   const std::vector<std::string>& overrides() const { return overrides_; }
 
-  /// Builds B from A's config (at t = 0; its history starts empty: sample() with A's first sample);
+  /// Builds B from A's config (at t = 0, or from `state` (World::save_state) when A was loaded from one:
+  /// both then go on from the same particles; its history starts empty: sample() with A's first sample);
   /// false with *err (the comparison is then off).
-  bool start(const RunConfig& a, const std::vector<std::string>& overrides, std::string* err);
-  /// Rebuilds B with the same overrides from A's new config (a reset, a load, a scene value).
-  bool restart(const RunConfig& a, std::string* err) { return start(a, std::vector<std::string>(overrides_), err); }
+  bool start(const RunConfig& a, const std::vector<std::string>& overrides, std::string* err,
+             const std::string* state = nullptr);
+  /// Rebuilds B with the same overrides from A's new config (a reset, a load, a scene value, a state).
+  bool restart(const RunConfig& a, std::string* err, const std::string* state = nullptr) {
+    return start(a, std::vector<std::string>(overrides_), err, state);
+  }
   void stop();
   /// B adopts A's params with its overrides applied again; false with *err if B cannot run them.
   bool follow(const Params& a, std::string* err);

@@ -36,6 +36,7 @@ class EngineLoop {
   /// the build or the restore throws.
   void rebuild(const RunConfig& cfg, const std::string* state = nullptr, const std::string& from = "");
   void save_state(const std::string& path);  // a checkpoint of world_ (engine_state.cpp)
+  void check_loaded_state();             // a restored state that holds a divergence is shown diverged
   void step();                           // one World::step with its bookkeeping
   void start_recording(double every);
   void start_compare(const std::vector<std::string>& overrides);  // A and B from t = 0; empty: stop

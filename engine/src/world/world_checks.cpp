@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "core/parallel.h"
 #include "core/stage.h"
@@ -43,12 +44,21 @@ std::int64_t World::fastest_particle() const {
 }
 
 void World::check_finite() const {
+  // Finite and within single precision: snapshots, the display and the float outputs hold the state as
+  // floats, so a value beyond FLT_MAX (a Tait pressure of 1e40 Pa after a wild timestep, say) would show
+  // as inf in a run that had not stopped.
+  constexpr double kLargest = std::numeric_limits<float>::max();
   auto bad = [&](const std::vector<double>& a, std::size_t n, const char* name) {
     std::size_t first = n;  // lowest index of a non-finite value: the same for any thread count
 #pragma omp parallel for reduction(min : first) if (n >= kParallelMin)
     for (std::size_t i = 0; i < n; ++i)
-      if (!std::isfinite(a[i])) first = std::min(first, i);
-    if (first < n) throw DivergedError(p_.id[first], step_, t_, name);
+      if (!(std::abs(a[i]) <= kLargest)) first = std::min(first, i);
+    if (first == n) return;
+    if (!std::isfinite(a[first])) throw DivergedError(p_.id[first], step_, t_, name);
+    char what[200];
+    std::snprintf(what, sizeof what, "particle %lld has %s = %.3g, beyond single precision (|value| > %.3g)",
+                  static_cast<long long>(p_.id[first]), name, a[first], kLargest);
+    throw DivergedError(p_.id[first], step_, t_, name, what);
   };
   const char* xn[3] = {"x", "y", "z"};
   const char* vn[3] = {"vx", "vy", "vz"};

@@ -120,7 +120,11 @@ void World::prepare_neighbours() {
     double hl_max = 0.0;
     for (std::size_t i = 0; i < n; ++i) hl_max = std::max(hl_max, h_limit_[i]);
     const double radius = support * (1.0 + kSkin);
-    make_ghosts(domain_, radius * hl_max, p_);
+    try {
+      make_ghosts(domain_, radius * hl_max, p_);
+    } catch (const GhostOverflow& e) {
+      throw DivergedError(-1, step_, t_, "h", e.what());
+    }
     copy_ghost_velocity(p_);
     copy_ghost_fields(p_, start_shared_);
     // the lists' h: h_limit for every particle, ghosts from their sources
