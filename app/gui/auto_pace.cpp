@@ -39,6 +39,9 @@ void AutoPace::see(GuiState& s) {
   s.set_real_time_factor(paced_);
   replay_ = true;
   world_ = f->world_serial;
+  // decided late (slow first frames: a loaded machine, a sanitizer build) with the run already well on:
+  // replay it from t = 0 at the pace rather than show its last part slowed
+  if (!f->at_end && t > kLateFraction * t_end) s.reset();
 }
 
 std::string AutoPace::note(const GuiState& s) const {
