@@ -45,7 +45,7 @@ std::unique_ptr<Window> Window::create(int width, int height, const char* title,
     return nullptr;
   }
   glfwMakeContextCurrent(w->window_);
-  pin_loaded_libraries();  // the GL driver is loaded now (ASan builds: leak reports can name it)
+  pin_loaded_libraries();  // the GL driver is loaded now (ASan builds: it stays mapped for LeakSanitizer)
   glfwSetWindowUserPointer(w->window_, w.get());
   glfwSetWindowRefreshCallback(w->window_, [](GLFWwindow* win) {
     static_cast<Window*>(glfwGetWindowUserPointer(win))->damaged_ = true;
