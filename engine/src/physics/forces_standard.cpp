@@ -33,8 +33,10 @@ struct Factors {
 /// Cont: also the continuity rate drho_a/dt = rho_a sum_b V_b (v*_a - v*_b) . grad W_ab(h_a) with its
 /// density diffusion (density_continuity.cpp), in the same pass (barotropic flows only). Shape: the
 /// kernel's shape, fixed at compile time (one instantiation per kernel, chosen once per evaluation).
+/// ThreeD = false in 1D and 2D, where z and v_z are 0: the z terms are not computed (each would add
+/// +-0 to a sum; the results differ at most in the sign of an exact zero).
 
-template <bool GradH, ViscType V, bool Energy, bool Cont, class Shape>
+template <bool GradH, ViscType V, bool Energy, bool Cont, bool ThreeD, class Shape>
 void standard_loop(StageContext& c, const Shape& shape, Factors& fac) {
   const Kernel& K = c.kernel;
   const Params& prm = c.prm;
@@ -97,10 +99,10 @@ void standard_loop(StageContext& c, const Shape& shape, Factors& fac) {
   PairBlock<kColumns> b;  // this thread's pairs of i
 #pragma omp for schedule(dynamic, 64)
   for (std::size_t i = 0; i < n; ++i) {
-    const double vxi = p.v[0][i], vyi = p.v[1][i], vzi = p.v[2][i];
+    const double vxi = p.v[0][i], vyi = p.v[1][i], vzi = ThreeD ? p.v[2][i] : 0.0;
     const double hi = h[i], hinv_i = hinv[i], dnorm_i = dnorm[i];
     const double Ai = pA[i], rhoi = rho[i], csi = cs[i];
-    const std::size_t np = gather_pairs(p, fac.R2.data(), i, c.nl.of(i), skip_walls, b);
+    const std::size_t np = gather_pairs<kColumns, ThreeD>(p, fac.R2.data(), i, c.nl.of(i), skip_walls, b);
     const std::uint32_t* J = b.j.data();
     const double* DX = b.dx.data();
     const double* DY = b.dy.data();
@@ -113,7 +115,7 @@ void standard_loop(StageContext& c, const Shape& shape, Factors& fac) {
 #pragma omp simd
     for (std::size_t k = 0; k < np; ++k) {
       const std::uint32_t j = J[k];
-      const double dx = DX[k], dy = DY[k], dz = DZ[k], r2 = R2[k];
+      const double dx = DX[k], dy = DY[k], dz = ThreeD ? DZ[k] : 0.0, r2 = R2[k];
       const double hj = h[j];
       const double r = std::sqrt(r2);
       const double rinv = 1.0 / r;
@@ -121,8 +123,8 @@ void standard_loop(StageContext& c, const Shape& shape, Factors& fac) {
       const double dWi = dnorm_i * shape.dw(r * hinv_i), dWj = dnorm[j] * shape.dw(r * hinv[j]);
       const double dWm = 0.5 * (dWi + dWj);
       const double Aj = pA[j];
-      const double dvx = vxi - vx[j], dvy = vyi - vy[j], dvz = vzi - vz[j];
-      const double vdotr = dvx * dx + dvy * dy + dvz * dz;
+      const double dvx = vxi - vx[j], dvy = vyi - vy[j], dvz = ThreeD ? vzi - vz[j] : 0.0;
+      const double vdotr = ThreeD ? dvx * dx + dvy * dy + dvz * dz : dvx * dx + dvy * dy;
       const double w = vdotr * rinv;
       VS[k] = pair::signal_speed(csi, cs[j], w, alpha_scale, beta_scale);
       double Pi = 0.0;
@@ -132,13 +134,13 @@ void standard_loop(StageContext& c, const Shape& shape, Factors& fac) {
                                                : -m[j] * (Ai * dWi + Aj * dWj) * rinv;  // times r_vec
       FX[k] = f * dx;
       FY[k] = f * dy;
-      FZ[k] = f * dz;
+      if constexpr (ThreeD) FZ[k] = f * dz;
       double lap = 0.0;
       if constexpr (V == ViscType::Laplacian) {
         lap = pair::laplacian_factor(m[j], nu, rhoi, rho[j], r * dWm, r2, 0.5 * (hi + hj), eps);
         LX[k] = lap * dvx;
         LY[k] = lap * dvy;
-        LZ[k] = lap * dvz;
+        if constexpr (ThreeD) LZ[k] = lap * dvz;
       }
       if constexpr (Cont) {
         CN[k] = r2 < support * support * hi * hi ? 1.0 : 0.0;
@@ -147,17 +149,17 @@ void standard_loop(StageContext& c, const Shape& shape, Factors& fac) {
           const bool fluid_j = !kind[j];
           ddx += xs[0][i] - (fluid_j ? xs[0][j] : 0.0);
           ddy += xs[1][i] - (fluid_j ? xs[1][j] : 0.0);
-          ddz += xs[2][i] - (fluid_j ? xs[2][j] : 0.0);
+          if constexpr (ThreeD) ddz += xs[2][i] - (fluid_j ? xs[2][j] : 0.0);
         }
         const double Vj = m[j] / rho[j], dW_r = dWi * rinv;
-        DR[k] = Vj * (ddx * dx + ddy * dy + ddz * dz) * dW_r;
+        DR[k] = Vj * (ThreeD ? ddx * dx + ddy * dy + ddz * dz : ddx * dx + ddy * dy) * dW_r;
         DF[k] = pair::density_diffusion(Vj, rhoi, rho[j], dW_r);
       }
       if constexpr (Energy || GradH) DU[k] = m[j] * w * dWi;  // sum_b m_b v_ab . grad W_ab(h_a)
       if constexpr (Energy) {  // du/dt = Ai times that sum (seed 000 eq. 3.3.19)
         if constexpr (V == ViscType::Monaghan) VH[k] = 0.5 * m[j] * Pi * w * dWm;  // dissipation -> heat
         // the Laplacian term's work -k v_ab . v_ab / 2 per pair share, as heat
-        if constexpr (V == ViscType::Laplacian) VH[k] = 0.5 * lap * (dvx * dvx + dvy * dvy + dvz * dvz);
+        if constexpr (V == ViscType::Laplacian) VH[k] = 0.5 * lap * (ThreeD ? dvx * dvx + dvy * dvy + dvz * dvz : dvx * dvx + dvy * dvy);
       }
     }
     double* CD = b[kCond];
@@ -182,11 +184,11 @@ void standard_loop(StageContext& c, const Shape& shape, Factors& fac) {
     for (std::size_t k = 0; k < np; ++k) {
       ax += FX[k];
       ay += FY[k];
-      az += FZ[k];
+      if constexpr (ThreeD) az += FZ[k];
       if constexpr (V == ViscType::Laplacian) {
         ax += LX[k];
         ay += LY[k];
-        az += LZ[k];
+        if constexpr (ThreeD) az += LZ[k];
       }
       vs = std::max(vs, VS[k]);
       if constexpr (Cont) {
@@ -219,11 +221,17 @@ void standard_loop(StageContext& c, const Shape& shape, Factors& fac) {
   if constexpr (Cont) ContinuityOutput::finish(c, sum_nb, n);
 }
 
+template <bool GradH, ViscType V, bool Energy, bool Cont, class Shape>
+void dispatch_dim(StageContext& c, const Shape& s, Factors& f) {
+  if (c.p.dim() == 3) standard_loop<GradH, V, Energy, Cont, true>(c, s, f);
+  else standard_loop<GradH, V, Energy, Cont, false>(c, s, f);
+}
+
 template <bool GradH, ViscType V, class Shape>
 void dispatch_energy(StageContext& c, bool energy, bool cont, const Shape& s, Factors& f) {
-  if (energy) standard_loop<GradH, V, true, false>(c, s, f);
-  else if (cont && !GradH) standard_loop<GradH, V, false, true>(c, s, f);
-  else standard_loop<GradH, V, false, false>(c, s, f);
+  if (energy) dispatch_dim<GradH, V, true, false>(c, s, f);
+  else if (cont && !GradH) dispatch_dim<GradH, V, false, true>(c, s, f);
+  else dispatch_dim<GradH, V, false, false>(c, s, f);
 }
 
 template <bool GradH, class Shape>

@@ -36,15 +36,16 @@ struct PairBlock {
 };
 
 /// Fills `b` with the j of `nb` that keep(j, |r_ij|^2) accepts, in list order; returns their count.
-/// Every candidate is written and counted or not by the test (no branch).
-template <int Columns, class Keep>
+/// Every candidate is written and counted or not by the test (no branch). ThreeD = false (1D and 2D,
+/// where z = 0) neither reads z nor writes b.dz: a loop built for it must not read b.dz.
+template <int Columns, bool ThreeD = true, class Keep>
 std::size_t compact_pairs(const Particles& p, std::size_t i, std::span<const std::uint32_t> nb, Keep keep,
                           PairBlock<Columns>& b) {
   b.fit(nb.size());
   const double* x = p.x[0].data();
   const double* y = p.x[1].data();
   const double* z = p.x[2].data();
-  const double xi = x[i], yi = y[i], zi = z[i];
+  const double xi = x[i], yi = y[i], zi = ThreeD ? z[i] : 0.0;
   std::uint32_t* J = b.j.data();
   double* DX = b.dx.data();
   double* DY = b.dy.data();
@@ -52,12 +53,16 @@ std::size_t compact_pairs(const Particles& p, std::size_t i, std::span<const std
   double* RR = b.r2.data();
   std::size_t n = 0;
   for (const std::uint32_t jj : nb) {
-    const double dx = xi - x[jj], dy = yi - y[jj], dz = zi - z[jj];
-    const double r2 = dx * dx + dy * dy + dz * dz;
+    const double dx = xi - x[jj], dy = yi - y[jj];
+    double r2 = dx * dx + dy * dy;
+    if constexpr (ThreeD) {
+      const double dz = zi - z[jj];
+      r2 += dz * dz;
+      DZ[n] = dz;
+    }
     J[n] = jj;
     DX[n] = dx;
     DY[n] = dy;
-    DZ[n] = dz;
     RR[n] = r2;
     n += keep(jj, r2) ? 1 : 0;
   }
@@ -67,17 +72,18 @@ std::size_t compact_pairs(const Particles& p, std::size_t i, std::span<const std
 
 /// The j of `nb` with 0 < |r_ij|^2 < max(R2_i, R2_j), R2 = (support h)^2 per particle (ghosts
 /// included): the pairs within support max(h_i, h_j). Without wall particles when skip_walls.
-template <int Columns>
+/// ThreeD = false only where z = 0 (see compact_pairs).
+template <int Columns, bool ThreeD = true>
 std::size_t gather_pairs(const Particles& p, const double* R2, std::size_t i, std::span<const std::uint32_t> nb,
                          bool skip_walls, PairBlock<Columns>& b) {
   const double R2i = R2[i];
   const std::uint8_t* kind = p.kind.data();
   if (skip_walls)  // the test chosen once per call
-    return compact_pairs(p, i, nb, [=](std::uint32_t j, double r2) {
+    return compact_pairs<Columns, ThreeD>(p, i, nb, [=](std::uint32_t j, double r2) {
       return (r2 < std::max(R2i, R2[j])) & (r2 > 0.0) & (kind[j] == 0);
     }, b);
-  return compact_pairs(p, i, nb, [=](std::uint32_t j, double r2) { return (r2 < std::max(R2i, R2[j])) & (r2 > 0.0); },
-                       b);
+  return compact_pairs<Columns, ThreeD>(
+      p, i, nb, [=](std::uint32_t j, double r2) { return (r2 < std::max(R2i, R2[j])) & (r2 > 0.0); }, b);
 }
 
 /// The j of `nb` with |r_ij|^2 < R2 (i itself included), without wall particles when skip_walls.
