@@ -85,7 +85,9 @@ TEST_P(RoundTrip, ExportedICStartsAndStepsLikeTheScene) {
       a.step();
       b.step();
     }
-    EXPECT_LT(state_difference(a, b), 1e-8) << to_string(format) << ": five steps later";
+    // the initial states' round-off (checked above to 1e-12) grows through the conduction's
+    // sqrt(|P_a - P_b|) and the h solve's stopping test (tolerance 1e-6): 1.1e-7 on Sod after five steps
+    EXPECT_LT(state_difference(a, b), 1e-6) << to_string(format) << ": five steps later";
     if (a.has_reference()) {
       const std::vector<double> ra = a.reference_values(), rb = b.reference_values();
       for (std::size_t k = 0; k < ra.size(); ++k)

@@ -82,8 +82,9 @@ TEST(WorldLists, KeptListsGiveTheFreshSearchsResults) {
                         Case{"dam_break", {{"scene.dx", "0.05"}}, 80, 0.05, false}}) {
     const RunResult kept = run(c.scene, c.set, c.steps, true);
     const RunResult fresh = run(c.scene, c.set, c.steps, false);
-    // round-off of another summation order, grown over the steps: far below a missing pair's effect
-    expect_same(kept, fresh, c.scale, 1e-7, c.scene);
+    // round-off of another summation order, which can stop the h solve (relative tolerance 1e-6) one
+    // iteration sooner or later: up to about 1e-6 over the steps, far below a missing pair's 1e-3
+    expect_same(kept, fresh, c.scale, 1e-6, c.scene);
     EXPECT_GE(fresh.builds, fresh.evaluations) << c.scene;
     EXPECT_LT(2 * kept.builds, kept.evaluations) << c.scene << ": lists were kept for several evaluations";
     if (c.periodic && std::string(c.scene) == "kelvin_helmholtz") {

@@ -159,7 +159,8 @@ void standard_loop(StageContext& c, const Shape& shape, Factors& fac) {
       if constexpr (Energy) {  // du/dt = Ai times that sum (seed 000 eq. 3.3.19)
         if constexpr (V == ViscType::Monaghan) VH[k] = 0.5 * m[j] * Pi * w * dWm;  // dissipation -> heat
         // the Laplacian term's work -k v_ab . v_ab / 2 per pair share, as heat
-        if constexpr (V == ViscType::Laplacian) VH[k] = 0.5 * lap * (ThreeD ? dvx * dvx + dvy * dvy + dvz * dvz : dvx * dvx + dvy * dvy);
+        if constexpr (V == ViscType::Laplacian)
+          VH[k] = 0.5 * lap * (ThreeD ? dvx * dvx + dvy * dvy + dvz * dvz : dvx * dvx + dvy * dvy);
       }
     }
     double* CD = b[kCond];
