@@ -6,11 +6,13 @@
 //   memory    a streaming sum over MiB per thread (far beyond the L3 cache: DRAM bandwidth)
 // Every thread does the same work whatever the team, so the speed-up is T times one thread's time over
 // the team's time (best of the repeats, 1 and T threads alternated). A loop limited by memory bandwidth
-// cannot scale better than the "memory" line.
+// cannot scale better than the "memory" line. Arguments that are not whole numbers in range: a message
+// naming the argument and exit code 2.
 #include <omp.h>
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -80,16 +82,25 @@ double seconds(F&& f) {
   return omp_get_wtime() - t0;
 }
 
+/// Argument k as a whole number in [lo, hi], `fallback` when absent; exits with 2 naming it otherwise.
+long argument(int argc, char** argv, int k, const char* name, long fallback, long lo, long hi) {
+  if (argc <= k) return fallback;
+  char* end = nullptr;
+  const long v = std::strtol(argv[k], &end, 10);
+  if (end == argv[k] || *end != '\0' || v < lo || v > hi) {
+    std::fprintf(stderr, "thread_limit_bench: %s must be a whole number from %ld to %ld, got '%s'\n", name, lo, hi,
+                 argv[k]);
+    std::exit(2);
+  }
+  return v;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  const int team = argc > 1 ? std::stoi(argv[1]) : 2;
-  const std::size_t mib = argc > 2 ? std::stoul(argv[2]) : 256;
-  const int repeats = argc > 3 ? std::stoi(argv[3]) : 5;
-  if (team < 2 || mib < 1 || repeats < 1) {
-    std::fprintf(stderr, "thread_limit_bench: threads must be at least 2, MiB and repeats at least 1\n");
-    return 2;
-  }
+  const int team = static_cast<int>(argument(argc, argv, 1, "threads", 2, 2, 256));
+  const auto mib = static_cast<std::size_t>(argument(argc, argv, 2, "MiB per thread", 256, 1, 4096));
+  const int repeats = static_cast<int>(argument(argc, argv, 3, "repeats", 5, 1, 1000));
   const std::size_t small = 512 * 1024 / 8, big = mib * 1024 * 1024 / 8;
   std::vector<double> cache_data(small * static_cast<std::size_t>(team), 1.0);
   std::vector<double> stream_data(big * static_cast<std::size_t>(team), 1.0);  // touched: no page faults timed
