@@ -72,6 +72,7 @@ int main(int argc, char** argv) {
       cfg.set(kv.substr(0, eq), kv.substr(eq + 1), "step_cost_bench");
     }
     sph::World w(cfg);
+    w.set_adaptive_threads(false);  // THREADS threads on every step, no team probe
     for (int s = 0; s < 2; ++s) w.step();
     const std::vector<sph::StageTiming> before = w.timings();
     const std::int64_t evals0 = w.evaluations(), builds0 = w.list_builds(), over0 = w.h_overflows();

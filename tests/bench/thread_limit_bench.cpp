@@ -14,7 +14,6 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstdio>
-#include <string>
 #include <vector>
 
 namespace {

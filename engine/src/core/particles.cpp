@@ -6,6 +6,8 @@
 #include <string>
 #include <type_traits>
 
+#include "core/parallel.h"
+
 namespace sph {
 
 Particles::Particles(int dim, std::size_t n, FieldSet fields) : dim_(dim), n_(n), n_fluid_(n), fields_(fields) {
@@ -58,14 +60,18 @@ void Particles::partition_by_kind() {
 void Particles::permute(std::span<const std::uint32_t> order) {
   if (order.size() != n_) throw std::invalid_argument("a permutation must cover every real particle");
   std::vector<double> scratch;
+  const std::size_t n = n_;
+  // a gather per array: the same result for any team (a team pays off from kParallelMin particles)
   auto apply = [&](auto& a) {
     using T = typename std::decay_t<decltype(a)>::value_type;
     if constexpr (std::is_same_v<T, double>) {
-      scratch.assign(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(n_));
-      for (std::size_t k = 0; k < n_; ++k) a[k] = scratch[order[k]];
+      scratch.assign(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(n));
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+      for (std::size_t k = 0; k < n; ++k) a[k] = scratch[order[k]];
     } else {
-      const std::vector<T> copy(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(n_));
-      for (std::size_t k = 0; k < n_; ++k) a[k] = copy[order[k]];
+      const std::vector<T> copy(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(n));
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+      for (std::size_t k = 0; k < n; ++k) a[k] = copy[order[k]];
     }
   };
   for (int k = 0; k < 3; ++k) { apply(x[k]); apply(v[k]); apply(a[k]); }

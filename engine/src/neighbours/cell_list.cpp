@@ -243,9 +243,11 @@ void permute_neighbours(NeighbourList& nl, std::span<const std::uint32_t> order)
   std::vector<std::uint32_t> slot(n);
   for (std::size_t k = 0; k < n; ++k) slot[order[k]] = static_cast<std::uint32_t>(k);
   std::vector<std::uint32_t> offset(n + 1, 0), index(nl.index.size());
+  for (std::size_t k = 0; k < n; ++k) offset[k + 1] = offset[k] + (nl.offset[order[k] + 1] - nl.offset[order[k]]);
+  // each new list a copy of an old one, renumbered: the same result for any team
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
   for (std::size_t k = 0; k < n; ++k) {
     const std::uint32_t b = nl.offset[order[k]], e = nl.offset[order[k] + 1];
-    offset[k + 1] = offset[k] + (e - b);
     for (std::uint32_t s = b; s < e; ++s) {
       const std::uint32_t j = nl.index[s];
       index[offset[k] + (s - b)] = j < n ? slot[j] : j;

@@ -43,7 +43,7 @@ class DensityContinuity final : public Stage {
 #pragma omp parallel if (p.size() >= kParallelMin)
     {
       std::vector<double> w;
-#pragma omp for schedule(dynamic, 64)
+#pragma omp for schedule(static)  // the same block per thread in every loop (core/parallel.h)
       for (std::size_t i = 0; i < n; ++i) {
         const auto nb = c.nl.of(i);
         corrected_kernel_weights(c.kernel, p, i, nb, 1, c.prm.correction.min_rcond, skip_walls, w);
@@ -96,7 +96,7 @@ class DensityContinuity final : public Stage {
     if constexpr (Corrected) corr = std::make_unique<CorrectionFields>(p);
     const double support = K.support();
     double sum_nb = 0.0;
-#pragma omp parallel for schedule(dynamic, 64) reduction(+ : sum_nb) if (p.size() >= kParallelMin)
+#pragma omp parallel for schedule(static) reduction(+ : sum_nb) if (p.size() >= kParallelMin)
     for (std::size_t i = 0; i < n; ++i) {
       const double hi = h[i], R2 = support * support * hi * hi;
       const Kernel::Scale si = K.scale(hi);

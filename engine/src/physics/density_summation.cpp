@@ -139,7 +139,7 @@ class DensitySummation final : public Stage {
 #pragma omp parallel reduction(+ : overflow, bisections) if (p.size() >= kParallelMin)
     {
     Candidates cand;  // this thread's
-#pragma omp for schedule(dynamic, 64)
+#pragma omp for schedule(static)  // the same block per thread in every loop (core/parallel.h)
     for (std::size_t i = 0; i < n; ++i) {
       const double reach = support * (fixed ? h[i] : h_limit[i]);
       gather<Volume, SkipWalls>(p, i, c.nl.of(i), m, reach * reach, cand);

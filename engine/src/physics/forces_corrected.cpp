@@ -70,7 +70,7 @@ class ForcesCorrected final : public Stage {
           T[3 * k + l] += 2.0 * mu * (D - (k == l ? tr / 3.0 : 0.0));
         }
     };
-#pragma omp parallel for schedule(dynamic, 64) if (p.size() >= kParallelMin)
+#pragma omp parallel for schedule(static) if (p.size() >= kParallelMin)
     for (std::size_t i = 0; i < n; ++i) {
       const double hi = h[i];
       const Kernel::Scale si = K.scale(hi);

@@ -97,7 +97,7 @@ void standard_loop(StageContext& c, const Shape& shape, Factors& fac) {
 #pragma omp parallel reduction(+ : sum_nb) if (p.size() >= kParallelMin)
   {
   PairBlock<kColumns> b;  // this thread's pairs of i
-#pragma omp for schedule(dynamic, 64)
+#pragma omp for schedule(static)  // the same block per thread in every loop (core/parallel.h)
   for (std::size_t i = 0; i < n; ++i) {
     const double vxi = p.v[0][i], vyi = p.v[1][i], vzi = ThreeD ? p.v[2][i] : 0.0;
     const double hi = h[i], hinv_i = hinv[i], dnorm_i = dnorm[i];

@@ -84,7 +84,7 @@ void standard_corrected_loop(StageContext& c, const Shape& shape, Factors& fac) 
 #pragma omp parallel reduction(+ : sum_nb) if (p.size() >= kParallelMin)
   {
   PairBlock<kColumns> b;  // this thread's pairs of i
-#pragma omp for schedule(dynamic, 64)
+#pragma omp for schedule(static)  // the same block per thread in every loop (core/parallel.h)
   for (std::size_t i = 0; i < n; ++i) {
     const double hi = h[i], Ri2 = support * support * hi * hi;
     const double Ai = pr2[i], rhoi = rho[i], csi = cs[i];

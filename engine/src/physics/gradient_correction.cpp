@@ -48,7 +48,7 @@ std::size_t correct(StageContext& c, const Shape& shape, std::vector<double>& vo
 #pragma omp parallel reduction(+ : fallbacks) if (p.size() >= kParallelMin)
   {
   PairBlock<kCols> b;  // this thread's pairs of i
-#pragma omp for schedule(dynamic, 64)
+#pragma omp for schedule(static)  // the same block per thread in every loop (core/parallel.h)
   for (std::size_t i = 0; i < n; ++i) {
     const double hi = h[i], R2 = support * support * hi * hi;
     const Kernel::Scale si = K.scale(hi);

@@ -36,7 +36,7 @@ class VelocityGradient final : public Stage {
     for (int k = 0; k < d; ++k)
       for (int l = 0; l < d; ++l) out[3 * k + l] = &p[component(Field::VelGradXX, k, l)];
     const double support = K.support();
-#pragma omp parallel for schedule(dynamic, 64) if (p.size() >= kParallelMin)
+#pragma omp parallel for schedule(static) if (p.size() >= kParallelMin)
     for (std::size_t i = 0; i < n; ++i) {
       const double hi = h[i], R2 = support * support * hi * hi;
       const Kernel::Scale si = K.scale(hi);

@@ -28,7 +28,7 @@ class Xsph final : public Stage {
     std::vector<double>* out[3] = {&p[Field::XsphX], &p[Field::XsphY], &p[Field::XsphZ]};
     const double eps = c.prm.xsph.eps;
     const double support = K.support();
-#pragma omp parallel for schedule(dynamic, 64) if (p.size() >= kParallelMin)
+#pragma omp parallel for schedule(static) if (p.size() >= kParallelMin)
     for (std::size_t i = 0; i < n; ++i) {
       double s[3] = {0.0, 0.0, 0.0};
       for (std::uint32_t j : c.nl.of(i)) {
