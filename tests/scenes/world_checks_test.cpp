@@ -2,7 +2,7 @@
 // degraded run (forward Euler, cfl = 0.7) is warned about by name and a run at cfl = 0.9 stops before
 // its energy is garbage; a clean run has no warnings; an h solve that stops converging mid-run and a
 // run past the time its reference applies to are warned about, naming the particle or the time; a state
-// beyond single precision (what snapshots and outputs hold) stops the run.
+// beyond single precision (what snapshots and outputs hold), or a NaN sound speed, stops the run.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -23,6 +23,22 @@ const RunWarning* find(const World& w, const std::string& kind) {
   for (const RunWarning& x : w.warnings())
     if (x.kind == kind) return &x;
   return nullptr;
+}
+
+/// Up to 200 steps of cfg; every snapshot before the run stops must hold finite floats. `why` gets the
+/// DivergedError's message (empty if the run never stopped).
+void run_until_stopped(const RunConfig& cfg, std::string& why) {
+  World w(cfg);
+  try {
+    for (int s = 0; s < 200; ++s) {
+      w.step();
+      const Snapshot snap = w.snapshot();
+      for (const auto& f : snap.fields)
+        for (float v : f.values) ASSERT_TRUE(std::isfinite(v)) << f.name << " at step " << w.steps() << " is " << v;
+    }
+  } catch (const DivergedError& e) {
+    why = e.what();
+  }
 }
 
 TEST(WorldChecks, CleanSodRunHasNoWarnings) {
@@ -119,19 +135,24 @@ TEST(WorldChecks, AStateBeyondSinglePrecisionStopsTheRun) {
   cfg.set("scene.dx", "0.1", "test");
   cfg.set("time.integrator", "euler", "test");
   cfg.set("time.dt", "10", "test");
-  World w(cfg);
   std::string why;
-  try {
-    for (int s = 0; s < 200; ++s) {
-      w.step();
-      const Snapshot snap = w.snapshot();
-      for (const auto& f : snap.fields)
-        for (float v : f.values) ASSERT_TRUE(std::isfinite(v)) << f.name << " at step " << w.steps() << " is " << v;
-    }
-  } catch (const DivergedError& e) {
-    why = e.what();
-  }
+  run_until_stopped(cfg, why);
+  if (HasFatalFailure()) return;
   ASSERT_FALSE(why.empty()) << "200 steps of 10 s did not stop";
+  std::printf("%s\n", why.c_str());
+}
+
+// An ideal gas whose explicit steps overshoot its cooling: a negative u leaves P finite and the sound
+// speed c = sqrt(gamma P/rho) NaN. The run must stop with a reason, and no snapshot before that may
+// hold a non-finite value (the display and the outputs would show it).
+TEST(WorldChecks, ANegativeInternalEnergyStopsTheRun) {
+  RunConfig cfg = RunConfig::from_scene("toro1");  // its sonic rarefaction cools fastest
+  cfg.set("time.dt", "0.005", "test");  // 25x the Courant step
+  std::string why;
+  run_until_stopped(cfg, why);
+  if (HasFatalFailure()) return;
+  ASSERT_FALSE(why.empty()) << "200 steps of 0.005 did not stop";
+  EXPECT_NE(why.find("non-finite cs"), std::string::npos) << why;
   std::printf("%s\n", why.c_str());
 }
 

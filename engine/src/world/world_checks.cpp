@@ -63,7 +63,9 @@ void World::check_finite() const {
   const char* xn[3] = {"x", "y", "z"};
   const char* vn[3] = {"vx", "vy", "vz"};
   for (int k = 0; k < p_.dim(); ++k) { bad(p_.x[k], p_.fluid(), xn[k]); bad(p_.v[k], p_.fluid(), vn[k]); }
-  for (Field f : {Field::Density, Field::H, Field::Energy, Field::Pressure})
+  // the sound speed too: a negative internal energy (an explicit step that overshoots a fast cooling)
+  // leaves P finite but c = sqrt(gamma P/rho) NaN, which the display and the outputs would show
+  for (Field f : {Field::Density, Field::H, Field::Energy, Field::Pressure, Field::SoundSpeed})
     if (p_.has(f)) bad(p_[f], p_.size(), std::string(info(f).key).c_str());
 }
 
