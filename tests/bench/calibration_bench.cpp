@@ -1,4 +1,4 @@
-// This machine's limit for an SPH pair loop (issue 14): a tight M4 density sum in 2D over a cell list,
+// This machine's limit for an SPH pair loop (tests/bench/README.md): a tight M4 density sum in 2D over a cell list,
 // written here with nothing else in it, so the engine's loops can be quoted as a ratio to it.
 //   calibration_bench [N=200000] [repeats=5]
 // N particles uniform in the unit square, h = 1.2 dx (M4, support 2h, about 18 neighbours); cells of

@@ -1,4 +1,4 @@
-// Thread speed-up on a 2D scene (issue 2): SCENE with KEY=VALUE (its size), STEPS steps, timed with 1 and
+// Thread speed-up on a 2D scene (tests/bench/README.md): SCENE with KEY=VALUE (its size), STEPS steps, timed with 1 and
 // with N threads; also checks that both runs end in the same state (determinism).
 //   scaling_bench [scene=box_random] [key=scene.count] [value=40000] [steps=20] [threads=2] [team=fixed]
 // team=fixed: every step on the team asked for (the world's team chooser off), the speed-up of the team

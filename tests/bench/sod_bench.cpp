@@ -1,4 +1,4 @@
-// Speed against error on the Sod shock tube (issue 2, item 12): for each resolution, kernel and
+// Speed against error on the Sod shock tube (tests/bench/README.md): for each resolution, kernel and
 // integrator, the wall time, particle-steps per second and L1 errors of rho, v and p against the exact
 // Riemann solution. A benchmark, not a test: it prints CSV (and a markdown table with --md).
 //   sod_bench [--t 0.2] [--n 100,200,...] [--kernels M4,M6] [--integrators leapfrog,rk4] [--threads N]

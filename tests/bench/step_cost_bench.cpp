@@ -1,4 +1,4 @@
-// Cost of a step against problem size (issue 14): for each N, build SCENE with KEY = N, take a few warm-up
+// Cost of a step against problem size (tests/bench/README.md): for each N, build SCENE with KEY = N, take a few warm-up
 // steps, then time STEPS steps on THREADS threads and report ns per particle-step (wall, and CPU time of
 // all threads, which a busy machine does not inflate), neighbours per particle (list entries and inside
 // the support), bytes per particle, the density solve's iterations, ns per neighbour-evaluation of the

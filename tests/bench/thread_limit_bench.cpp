@@ -1,4 +1,4 @@
-// This machine's limit for thread speed-ups (issue 14): what T threads give over one on three loops
+// This machine's limit for thread speed-ups (tests/bench/README.md): what T threads give over one on three loops
 // with nothing else in them, so the engine's speed-ups can be quoted against what the machine allows.
 //   thread_limit_bench [threads=2] [MiB per thread=256] [repeats=5]
 //   compute   four independent multiply-add chains in registers (no memory traffic)

@@ -1,4 +1,4 @@
-// The Barnes-Hut tree against direct summation (the bounds: at theta = 0.5 the largest relative
+// The Barnes-Hut tree against direct summation (the required bounds: at theta = 0.5 the largest relative
 // force error <= 1% and the RMS <= 0.1%; theta = 0 equals direct summation to round-off), the accuracy
 // of the quadrupole far field, the structure of the tree, and bitwise identical results for 1 and 2
 // threads. Direct summation conserves momentum to round-off (antisymmetric pair forces).
@@ -83,7 +83,7 @@ TEST_P(TreeAgainstDirect, TheRelativeGuardBoundsTheErrorWhereTheFieldIsWeak) {
   const Errors ep = compare(plain, direct), eg = compare(guarded, direct);
   std::printf("%s, theta = 0.5: largest error %.3g plain, %.3g guarded\n", c.name, ep.max, eg.max);
   EXPECT_GT(ep.max, 3.0 * eg.max);
-  EXPECT_GT(ep.max, 0.01);  // plain Barnes-Hut alone misses the bound at this theta
+  EXPECT_GT(ep.max, 0.01);  // plain Barnes-Hut alone misses the required bound at this theta
 }
 
 TEST_P(TreeAgainstDirect, ThetaZeroIsDirectSummation) {

@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# The bad-input matrix of `sph` (issue 11): scene files, flags and output paths that must be refused. Each
-# case asserts its documented exit code (README "Exit codes": 2 usage, 3 invalid scene, 4 I/O), one clear
-# message naming the file, key or flag (a grep pattern), no partial output (the output folder absent or
-# without particle files), no crash (exit < 128), no hang (timeout 20 s) and no runaway memory (every case
-# runs under `ulimit -v` 4 GiB; an enormous particle count or frame is refused up front with the memory
-# it would need).
+# The bad-input matrix of `sph` (README "Bad input, fuzzing and sanitizers"): scene files, flags and
+# output paths that must be refused. Each case asserts its documented exit code (README "Exit codes": 2
+# usage, 3 invalid scene, 4 I/O), one clear message naming the file, key or flag (a grep pattern), no
+# partial output (the output folder absent or without particle files), no crash (exit < 128), no hang
+# (timeout 20 s) and no runaway memory (every case runs under `ulimit -v` 4 GiB; an enormous particle
+# count or frame is refused up front with the memory it would need).
 # usage: bad_input_test.sh SPH_BINARY
 set -u
 sph=$1

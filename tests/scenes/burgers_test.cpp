@@ -1,5 +1,5 @@
 // The Burgers scenes of seed 002 (finite pointset method): the viscous scheme converges to the viscous
-// (Cole-Hopf) solution with order >= 0.9 over N = 240 ... 1920 at t = 0.8 (the bound), and its
+// (Cole-Hopf) solution with order >= 0.9 over N = 240 ... 1920 at t = 0.8 (the required bound), and its
 // error against the inviscid eq. 22 stops at the floor the viscosity itself sets; the upwind scheme
 // converges to eq. 22 at first order before the shock forms, and (seed 002's non-conservative form)
 // leaves the shock at x = a afterwards instead of moving it at the Rankine-Hugoniot speed 1/2; point

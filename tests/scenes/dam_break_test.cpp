@@ -65,7 +65,7 @@ INSTANTIATE_TEST_SUITE_P(Formulations, DamBreakTank,
 
 TEST(DamBreakFront, WithinFivePercentOfTheMeasuredFronts) {
   // The scene as it ships (dx = a/40, standard-corrected, dummy walls): the surge front against the nearer
-  // of Martin & Moyce 1952 and Koshizuka & Oka 1996 wherever they have data, for T <= 2.5 (the issue's
+  // of Martin & Moyce 1952 and Koshizuka & Oka 1996 wherever they have data, for T <= 2.5 (the required
   // criterion). Measured 0.5-4.3% at T = 0.44 ... 2.21 (largest at T = 1.77).
   World w(RunConfig::from_scene("dam_break"));
   const double t_end = 2.5 / std::sqrt(2.0 * 9.81 / 1.0);  // T = t sqrt(2 g / a), a = 1 m
@@ -105,7 +105,7 @@ TEST_P(DamBreakSlope, ComesToRest) {
   std::printf("dam_break_slope %s: peak E_kin = %.4g J/m, at t = 5 s %.4g J/m (%.2e of the peak), v_max %.3g m/s\n",
               force.c_str(), peak, E, E / peak, vmax);
   EXPECT_GT(peak, 10.0);        // it did flow (measured 222-250 J/m at t = 0.3 s)
-  EXPECT_LT(E, 0.01 * peak);    // the criterion (measured 1e-4 to 6e-4)
+  EXPECT_LT(E, 0.01 * peak);    // the required criterion (measured 1e-4 to 6e-4)
   EXPECT_LT(vmax, 2.0 * std::sqrt(2.0 * 9.81 * 0.6));  // nothing is flung out of the tank
 }
 

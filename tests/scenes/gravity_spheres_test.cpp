@@ -47,7 +47,7 @@ TEST(Evrard, ConservesEnergyToThreeAndHasTheSeedsEnergyCurves) {
   std::printf("evrard: E0 = %.4f, |dE/E| <= %.3g over %lld steps; E_kin peak %.3f at t = %.2f, E_int max %.3f at %.2f, "
               "E_pot min %.3f at %.2f\n",
               E0, worst, static_cast<long long>(w.steps()), kin.value, kin.t, therm.value, therm.t, pot.value, pot.t);
-  EXPECT_LT(worst, 1e-3);  // the issue's bound
+  EXPECT_LT(worst, 1e-3);  // the required bound
   // the shape of seed 003 Fig. 3.8 (REFERENCES.md: kinetic peak near t ~ 0.8-0.9, thermal maximum near
   // 1.1-1.2, potential minimum -1.8 to -2.0)
   EXPECT_GT(kin.t, 0.7);
@@ -77,7 +77,7 @@ TEST(Polytrope, RelaxedStarMatchesLaneEmdenAndStaysInEquilibrium) {
   std::printf("polytrope n = 1: relaxed density %.2f%% off Lane-Emden inside 0.8 R, virial %.4f; free for 2 time "
               "units: density <= %.2f%%, |virial - 1| <= %.4f, v_max %.3g\n",
               100 * relaxed_err, relaxed_virial, 100 * worst_err, worst_virial, vmax);
-  EXPECT_LT(relaxed_err, 0.05);  // the issue: within 5% inside 0.8 R
+  EXPECT_LT(relaxed_err, 0.05);  // required: within 5% inside 0.8 R
   EXPECT_LT(std::abs(relaxed_virial - 1.0), 0.02);  // and within 2% of equilibrium
   EXPECT_LT(worst_err, 0.05);
   EXPECT_LT(worst_virial, 0.02);

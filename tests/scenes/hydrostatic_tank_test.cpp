@@ -22,7 +22,7 @@ TEST(HydrostaticTank, MidDepthPressureWithinTwoPercentAfterSettling) {
   const double err = w.reference_value("err_mid"), l1 = w.reference_value("L1_p_rel");
   std::printf("hydrostatic, dummy walls, t = 1: |p_mid/exact - 1| = %.4f, L1(P)/(rho0 g H) = %.4f, v_max = %.3g\n",
               err, l1, w.diagnostics().v_max);
-  EXPECT_LT(err, 0.02);   // the criterion (measured 0.4%)
+  EXPECT_LT(err, 0.02);   // the required criterion (measured 0.4%)
   EXPECT_LT(l1, 0.02);    // everywhere, not only at mid-depth (measured 0.1%)
   // at rest: the start-up waves have decayed to far below the free-fall speed sqrt(2 g H) = 3.1 m/s
   EXPECT_LT(w.diagnostics().v_max, 0.05);

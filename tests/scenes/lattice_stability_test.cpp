@@ -1,4 +1,4 @@
-// Why a resting lattice grows with some kernels (issue: box_lattice with wendland_c2 reached |v| = 6e-3
+// Why a resting lattice grows with some kernels (box_lattice with wendland_c2 reached |v| = 6e-3
 // by t = 63 from round-off). Linear stability of the lattice, computed here: with the energy equation,
 // SPH's grad-h gas keeps du = (P/rho^2) drho exactly, so near rest it is the barotropic system
 // P = K rho^gamma, whose accelerations derive from a potential. The stiffness M = -da/dx (central

@@ -44,7 +44,7 @@ TEST(BoxLattice, StaysAtRestUntilT30) {
   RunConfig cfg = RunConfig::from_scene("box_lattice");
   World w(cfg);
   w.advance_to(30.0);
-  // seed 000 Fig. 4.3 reports |v| ~ 1e-11 at t = 30; the issue asks < 1e-12 (measured 7e-16)
+  // seed 000 Fig. 4.3 reports |v| ~ 1e-11 at t = 30; we require < 1e-12 (measured 7e-16)
   EXPECT_LT(w.diagnostics().v_max, 1e-12);
 }
 

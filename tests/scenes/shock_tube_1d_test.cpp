@@ -52,7 +52,7 @@ TEST(Sod, PlateauWithinOnePercentAndL1RhoBound) {
   const RiemannSolver rs({1.0, 0.0, 1.0}, {0.125, 0.0, 0.1}, 1.4);
   const Plateau pl = star_plateau(w, rs, 0.2, 0.02);
   ASSERT_GT(pl.count, 30u);
-  // issue 2: plateaus within 1% of the exact p* = 0.30313, u* = 0.92745 (measured: 0.1% and 0.06%)
+  // Toro's Table 4.1, test 1: plateaus within 1% of the exact p* = 0.30313, u* = 0.92745 (measured: 0.1% and 0.06%)
   EXPECT_NEAR(pl.p / 0.30313, 1.0, 0.01);
   EXPECT_NEAR(pl.v / 0.92745, 1.0, 0.01);
   struct { double L1_rho, L1_v, L1_p; } e{w.reference_value("L1_rho"), w.reference_value("L1_v"),
@@ -134,7 +134,7 @@ TEST(ShocktubeCastellanos, PlateauMatchesExactSolution) {
 class RiemannVariant : public ::testing::TestWithParam<const char*> {};
 
 // Lax and Toro's tests 1, 3, 4, 5 at the scenes' default resolution (200-320 particles left of the
-// diaphragm): positive rho and P everywhere, and the star state within the issue's 2% (measured
+// diaphragm): positive rho and P everywhere, and the star state within the required 2% (measured
 // 0.0006-0.03%); the two strong blast waves and their collision included.
 TEST_P(RiemannVariant, StarStateWithinTwoPercentAndPositiveState) {
   World w(RunConfig::from_scene(GetParam()));
@@ -173,7 +173,7 @@ TEST(Toro123, RunsToItsEndAndReportsItsNearVacuumDensityError) {
 
 TEST(ShockTube, EqualMassesKeepTheRightDensityExactWhenTheCountRounds) {
   // n_left = 100 on Sod: the right side would need 12.5 particles; 13 are used and the right wall
-  // moves out so that m / spacing = 0.125 exactly (the issue found 0.130 before)
+  // moves out so that m / spacing = 0.125 exactly (a rounded count alone gives 0.130)
   RunConfig cfg = RunConfig::from_scene("sod");
   cfg.set("scene.n_left", "100", "test");
   World w(cfg);

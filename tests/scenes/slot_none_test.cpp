@@ -1,6 +1,6 @@
 // "Model only what a scene needs": for every built-in scene, every slot it may drop (the option "none"
 // is valid there and the scene accepts it) runs: the World builds, steps, and allocates no field of the
-// dropped stage. Also: a scene with no viscosity refuses its parameters (the example).
+// dropped stage. Also: a scene with no viscosity refuses its parameters (e.g. visc.alpha on box_lattice).
 #include <gtest/gtest.h>
 
 #include <algorithm>

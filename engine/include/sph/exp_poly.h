@@ -1,8 +1,9 @@
-// e^x written with plain arithmetic (issue 14), so pair loops that use the Gaussian kernel vectorise:
-// the C library's exp is an opaque call that keeps a loop scalar. Cody-Waite reduction x = k ln2 + r with
-// |r| <= ln2/2, e^r by its Taylor polynomial to degree 13 (remainder below 5e-18 relative), and 2^k put
-// into the exponent bits. Relative error within 2 ulp of the exact value for -708 <= x <= 709 (tested
-// against std::exp); the same result on every target and vector width (no FMA: -ffp-contract=off).
+// e^x written with plain arithmetic (tests/engine/exp_poly_test.cpp), so pair loops that use the Gaussian
+// kernel vectorise: the C library's exp is an opaque call that keeps a loop scalar. Cody-Waite reduction
+// x = k ln2 + r with |r| <= ln2/2, e^r by its Taylor polynomial to degree 13 (remainder below 5e-18
+// relative), and 2^k put into the exponent bits. Relative error within 2 ulp of the exact value for -708
+// <= x <= 709 (tested against std::exp); the same result on every target and vector width (no FMA:
+// -ffp-contract=off).
 #pragma once
 #include <bit>
 #include <cstdint>

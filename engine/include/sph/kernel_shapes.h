@@ -1,8 +1,9 @@
-// Kernel shapes as compile-time types (issue 14): w(q) and dw/dq without sigma, for q >= 0, one struct
-// per family (seed 000 eqs. 3.2.6-3.2.9; Wendland 1995). A pair loop templated on a shape evaluates it
-// with no switch per pair; with_shape() picks the instantiation once per loop from a runtime kernel type.
-// The B-splines are written as clamped powers, t = max(k - q, 0), which are exact (a clamped term adds
-// +0) and need no branch on q; every shape is 0 at and beyond its support.
+// Kernel shapes as compile-time types (the pair-loop speed-ups of tests/bench/README.md): w(q) and dw/dq
+// without sigma, for q >= 0, one struct per family (seed 000 eqs. 3.2.6-3.2.9; Wendland 1995). A pair
+// loop templated on a shape evaluates it with no switch per pair; with_shape() picks the instantiation
+// once per loop from a runtime kernel type. The B-splines are written as clamped powers, t = max(k - q,
+// 0), which are exact (a clamped term adds +0) and need no branch on q; every shape is 0 at and beyond
+// its support.
 #pragma once
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,7 @@
-// Spatial ordering of the particle arrays (issue 14): particles close in space are stored close in
-// memory, so the pair loops gather their neighbours from a few cache lines instead of from all over the
-// arrays. The order is a Morton (Z-order) curve over cells of a given size.
+// Spatial ordering of the particle arrays (tests/engine/spatial_order_test.cpp): particles close in
+// space are stored close in memory, so the pair loops gather their neighbours from a few cache lines
+// instead of from all over the arrays. The order is a Morton (Z-order) curve over cells of a given
+// size.
 #pragma once
 #include <cstdint>
 #include <vector>

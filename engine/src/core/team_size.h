@@ -1,12 +1,12 @@
-// The OpenMP team size of a world's steps, chosen by measured time (issue 14). A team of two costs a
-// barrier wait at every loop; for a small problem, or on a two-core machine whose other core is busy
-// (the GUI thread, another program), that wait can make two threads slower than one: measured here with
-// a compiler running on the other core, a 20k-particle step took 0.30 s with two spinning threads against
-// 0.018 s with one. So the world times its steps with one thread and with the full team, keeps the
-// faster, and measures again every so often: sooner when its steps slow down, less often while one
-// thread keeps winning. A probe stops at the first team step that is clearly slower, so a bad team costs
-// one step per probe. Results do not depend on the team size (gather loops in a fixed order): this
-// choice changes only the time.
+// The OpenMP team size of a world's steps, chosen by measured time (tests/engine/team_size_test.cpp). A
+// team of two costs a barrier wait at every loop; for a small problem, or on a two-core machine whose
+// other core is busy (the GUI thread, another program), that wait can make two threads slower than one:
+// measured here with a compiler running on the other core, a 20k-particle step took 0.30 s with two
+// spinning threads against 0.018 s with one. So the world times its steps with one thread and with the
+// full team, keeps the faster, and measures again every so often: sooner when its steps slow down, less
+// often while one thread keeps winning. A probe stops at the first team step that is clearly slower, so a
+// bad team costs one step per probe. Results do not depend on the team size (gather loops in a fixed
+// order): this choice changes only the time.
 #pragma once
 #include <algorithm>
 #include <array>

@@ -1,5 +1,5 @@
-// Neighbour lists kept between evaluations (issue 14): Verlet lists with a skin, for every scene with
-// neighbours, periodic and mirror ghosts included.
+// Neighbour lists kept between evaluations (step_cost_bench, tests/bench/README.md): Verlet lists with
+// a skin, for every scene with neighbours, periodic and mirror ghosts included.
 //
 // When lists are built, each particle gets h_limit, the largest h its list covers: reach times its h
 // (reach = 1.1 for the Newton-Raphson h, 1.05 for an evolved h, 1 for a fixed h), more where dh/dt says
@@ -31,7 +31,7 @@ constexpr double kSkin = 0.15;
 /// (more where dh/dt predicts it, see h_limit) before the lists are rebuilt; an evolved h changes by far
 /// less than 5% in a step; a fixed h needs no margin. 1.1 instead of 1.2: lists of 44 instead of 53
 /// entries per particle (box_random, 2D), 17% fewer candidates for every pair loop to test; builds rose
-/// from 0.45 to 0.50 of the evaluations on Sedov, and no solve had to be redone (issue 14).
+/// from 0.45 to 0.50 of the evaluations on Sedov, and no solve had to be redone (step_cost_bench).
 double reach_of(HMode mode) {
   switch (mode) {
     case HMode::Variable: return 1.1;

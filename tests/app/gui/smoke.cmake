@@ -1,5 +1,5 @@
 # ctest driver for sph-gui under Xvfb. Variables: XVFB_RUN, GUI, CHECK, OUT, MODE (smoke | keys | match), SPH.
-#   smoke: the issue's command line, then the screenshot checks;
+#   smoke: the README's scripted-screenshot command line, then the screenshot checks;
 #   keys:  quick key taps through the key callback (--tap-keys) are all taken;
 #   end:   Space at t_end replays and stops at t_end again;
 #   match: the GUI records the t = 0 frame of sod, the headless program renders the same frame, and the
