@@ -121,6 +121,14 @@ TEST(ForceTerms, EveryFormulationAddsUpToItsStage) {
   expect_sums_match(co, "corrected, viscous stress");
   co.physics.viscosity = ViscType::Monaghan;
   expect_sums_match(co, "corrected, Monaghan");
+  // alpha per particle (the Balsara switch varies it from particle to particle): the inspector's Pi is
+  // the loops' own term type, so the split still adds up
+  st.physics.viscosity = ViscType::Monaghan;
+  st.physics.visc_switch = ViscSwitch::Balsara;
+  expect_sums_match(st, "standard, Monaghan with the Balsara switch");
+  sc.physics.viscosity = ViscType::Monaghan;
+  sc.physics.visc_switch = ViscSwitch::Balsara;
+  expect_sums_match(sc, "standard-corrected, Monaghan with the Balsara switch");
 }
 
 }  // namespace

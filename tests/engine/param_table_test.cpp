@@ -110,6 +110,15 @@ TEST(ParamTable, JsonListsOnlyTheParametersOfStagesThatRun) {
 bool reachable(const SceneSpec& s, const ParamInfo& info) {
   if (info.is_active(s.defaults)) return true;
   auto ok = [&](const Params& p) { return p.physics.validate().empty() && info.is_active(p); };
+  // or by a choice of the stage's own (visc.switch = cullen_dehnen for the switch's parameters)
+  for (const ParamInfo& c : param_table()) {
+    if (c.choices.empty() || c.slot != info.slot || &c == &info) continue;
+    for (const std::string& choice : c.choices) {
+      Params q = s.defaults;
+      std::string err;
+      if (c.is_active(q) && c.set(q, choice, err) && ok(q)) return true;
+    }
+  }
   for (const std::string& option : slot_info(info.slot).options) {
     Params p = s.defaults;
     if (!s.allows(info.slot, option) || !p.physics.set(info.slot, option)) continue;

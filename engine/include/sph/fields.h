@@ -32,6 +32,9 @@ enum class Field : std::uint8_t {
   Potential,   ///< gravitational potential phi at the particle [length^2/time^2]
   RestX,       ///< the FPM point's place in the initial set Gamma_0 (seed 002 Note 3.2) [length]
   HRate,       ///< dh/dt = -h/(d rho) drho/dt of a summation density (seed 000 eqs. 3.3.2, 3.5.1) [length/time]
+  DivV,        ///< div v = -(1/(Omega rho)) sum_b m_b v_ab . grad W_ab(h_a) [1/time]
+  CurlV,       ///< |curl v| = |(1/(Omega rho)) sum_b m_b v_ab x grad W_ab(h_a)| [1/time]
+  ViscAlpha,   ///< artificial viscosity alpha of the particle (visc.switch) [dimensionless]
   Count
 };
 
@@ -127,6 +130,9 @@ constexpr std::array<FieldInfo, kFieldCount> kFieldInfo{{
     {"phi", "gravitational potential phi", 0, true, true},
     {"x0", "initial point x0 (Gamma_0)", 0, false, false},
     {"dhdt", "dh/dt", 0, false, false},
+    {"divv", "velocity divergence div v", 0, true, false},
+    {"curlv", "vorticity |curl v|", 0, true, false},
+    {"alpha", "viscosity alpha (switch)", 0, true, true},
 }};
 
 inline const FieldInfo& info(Field f) { return kFieldInfo[index(f)]; }

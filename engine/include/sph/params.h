@@ -74,6 +74,10 @@ struct ViscParams {
   double beta = 2.0;   ///< Monaghan Pi, quadratic term [dimensionless]
   double eps = 0.01;   ///< eta^2 = eps h^2 regularises 1/r^2 in Pi and the Laplacian (seed 001 eq. 42) [dimensionless]
   double nu = 1e-6;    ///< kinematic viscosity of the Laplacian viscosity [length^2/time]
+  // The switch (physics.visc_switch = cullen_dehnen): alpha per particle in [alpha_min, alpha_max]
+  double alpha_min = 0.2;  ///< floor of alpha far from shocks (Sod: 0.1 gives L1(rho) 1.15x, 0.2 1.05x the constant alpha = 1) [dimensionless]
+  double alpha_max = 1.0;  ///< alpha at a shock; Pi uses beta alpha_ab / alpha_max for its quadratic term [dimensionless]
+  double decay = 0.1;      ///< alpha decays on tau = h / (decay c) behind a shock [dimensionless]
   bool operator==(const ViscParams&) const = default;
 };
 
@@ -164,6 +168,8 @@ bool parse(const std::string& s, IntegratorType& out);
 const char* to_string(Softening s);
 bool parse(const std::string& s, Softening& out);
 const char* to_string(PointControl c);
+const char* to_string(ViscSwitch s);
+bool parse(const std::string& s, ViscSwitch& out);
 bool parse(const std::string& s, PointControl& out);
 
 }  // namespace sph

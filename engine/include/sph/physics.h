@@ -42,6 +42,13 @@ enum class ViscType {
   Monaghan,   ///< artificial Pi_ab (seed 003 eq. 3.16; seed 001 eqs. 41-43)
   Laplacian,  ///< physical nu, Laplacian from first kernel derivatives (seed 004; Morris et al. 1997)
 };
+/// A time-dependent artificial viscosity: alpha per particle instead of the constant visc.alpha
+/// (physics.viscosity = monaghan with the standard or standard-corrected forces; viscosity_switch.cpp).
+enum class ViscSwitch {
+  None,          ///< the constant alpha of visc.alpha
+  Balsara,       ///< alpha f_a, f = |div v|/(|div v| + |curl v| + 1e-4 c/h) (Balsara 1995, JCP 121, 357)
+  CullenDehnen,  ///< alpha raised ahead of shocks and decaying behind them (Cullen & Dehnen 2010, MNRAS 408, 669)
+};
 enum class Toggle { Off, On };
 enum class BodyForce {
   None,
@@ -84,6 +91,8 @@ struct Physics {
   GravityType gravity = GravityType::None;
   WallType walls = WallType::None;
   FpmType fpm = FpmType::None;
+  /// visc.switch: a parameter of the viscosity slot rather than a slot (it changes the stages).
+  ViscSwitch visc_switch = ViscSwitch::None;
 
   bool corrected() const { return force == ForceType::Corrected || force == ForceType::StandardCorrected; }
   bool operator==(const Physics&) const = default;

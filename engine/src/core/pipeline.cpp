@@ -1,4 +1,5 @@
 // Pipeline order: density, smoothing length, EOS, wall pressure, corrections, velocity gradient, XSPH,
+// the viscosity switch,
 // forces (with viscosity, conduction and the energy equation fused into their loop), continuity rate,
 // wall forces, body force, self-gravity; the finite pointset method runs alone. A slot set to "none" contributes no stage.
 #include "core/pipeline.h"
@@ -22,6 +23,7 @@ Pipeline::Pipeline(const Physics& ph, int dim) {
   if (ph.corrected()) add(make_gradient_correction(dim));
   if (ph.force == ForceType::Corrected && ph.viscosity == ViscType::Laplacian) add(make_velocity_gradient(dim));
   if (ph.xsph == Toggle::On) add(make_xsph());
+  if (ph.visc_switch != ViscSwitch::None) add(make_viscosity_switch(ph));
   switch (ph.force) {
     case ForceType::Standard: add(make_forces_standard(ph)); break;
     case ForceType::StandardCorrected: add(make_forces_standard_corrected(ph, dim)); break;

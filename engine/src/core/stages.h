@@ -23,6 +23,7 @@ std::unique_ptr<Stage> make_walls_dummy();
 std::unique_ptr<Stage> make_gradient_correction(int dim);
 std::unique_ptr<Stage> make_velocity_gradient(int dim);
 std::unique_ptr<Stage> make_xsph();
+std::unique_ptr<Stage> make_viscosity_switch(const Physics& ph);  // visc.switch: balsara | cullen_dehnen
 std::unique_ptr<Stage> make_forces_standard(const Physics& ph);
 std::unique_ptr<Stage> make_forces_standard_corrected(const Physics& ph, int dim);
 std::unique_ptr<Stage> make_forces_corrected(const Physics& ph, int dim);

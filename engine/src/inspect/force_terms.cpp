@@ -7,6 +7,8 @@
 #include "physics/corrected_kernel.h"
 #include "physics/pair_block.h"
 #include "physics/pair_terms.h"
+#include "physics/terms/conduction.h"
+#include "physics/terms/visc_terms.h"
 
 namespace sph {
 namespace {
@@ -103,15 +105,28 @@ void sum_pairs(const StageContext& c, std::size_t i, bool skip_walls, const Term
   }
 }
 
-/// Monaghan Pi_ab of the pair (0 unless the scene runs it).
+/// Pi_ab of the pair from the pair loops' own viscosity term (terms/visc_terms.h); 0 unless it has one.
 double pi_of(const StageContext& c, std::size_t i, std::size_t j, double vdotr, double r2) {
-  if (c.prm.physics.viscosity != ViscType::Monaghan) return 0.0;
   const Particles& p = c.p;
   const auto& h = p[Field::H];
+  return terms::with_viscosity(c.prm.physics, [&](auto tag) -> double {
+    using V = typename decltype(tag)::type;
+    if constexpr (V::kPi) {
+      const auto& rho = p[Field::Density];
+      const auto& cs = p[Field::SoundSpeed];
+      return V(c).pi(i, static_cast<std::uint32_t>(j), vdotr, r2, h[i], h[j], rho[i], rho[j], cs[i], cs[j]);
+    } else {
+      return 0.0;
+    }
+  });
+}
+
+/// The Laplacian viscosity's k_ab of the pair (terms/visc_laplacian.h).
+double laplacian_of(const StageContext& c, std::size_t i, std::size_t j, double rdW, double r2) {
+  const Particles& p = c.p;
   const auto& rho = p[Field::Density];
-  const auto& cs = p[Field::SoundSpeed];
-  const auto& v = c.prm.visc;
-  return pair::monaghan_pi(vdotr, r2, h[i], h[j], rho[i], rho[j], cs[i], cs[j], v.alpha, v.beta, v.eps);
+  const auto& h = p[Field::H];
+  return terms::ViscLaplacian(c).factor(p[Field::Mass][j], rho[i], rho[j], rdW, r2, 0.5 * (h[i] + h[j]));
 }
 
 Vec3 velocity_difference(const Particles& p, std::size_t i, std::size_t j) {
@@ -129,7 +144,8 @@ void standard(const StageContext& c, std::size_t i, std::vector<InspectTerm>* te
   const auto& P = p[Field::Pressure];
   const bool grad_h = ph.density == DensityMode::Summation || ph.density == DensityMode::Volume;
   const bool energy = ph.energy == Toggle::On;
-  const bool conduction = energy && ph.conduction == Toggle::On && c.prm.conduction.alpha_u > 0.0;
+  const terms::Conduction cond(c);
+  const bool conduction = cond.on;
   auto A = [&](std::size_t b) { return grad_h ? P[b] / (p[Field::Omega][b] * rho[b] * rho[b]) : P[b] / (rho[b] * rho[b]); };
   const double Ai = A(i);
   const Active active = {true, ph.viscosity == ViscType::Monaghan, ph.viscosity == ViscType::Laplacian, false, conduction};
@@ -145,18 +161,15 @@ void standard(const StageContext& c, std::size_t i, std::vector<InspectTerm>* te
               if (energy) o.du[kPressure] = Ai * m[j] * w * dWi;
               const double Pi = pi_of(c, i, j, vdotr, rr * rr);
               o.a[kViscPi] = r * (-m[j] * Pi * dWm / rr);
-              if (energy) o.du[kViscPi] = 0.5 * m[j] * Pi * w * dWm;
+              if (energy) o.du[kViscPi] = terms::ViscMonaghan::heat(m[j], Pi, w, dWm);
               if (ph.viscosity == ViscType::Laplacian) {
-                const auto& v = c.prm.visc;
-                const double k = pair::laplacian_factor(m[j], v.nu, rho[i], rho[j], rr * dWm, rr * rr, 0.5 * (h[i] + h[j]), v.eps);
+                const double k = laplacian_of(c, i, j, rr * dWm, rr * rr);
                 o.a[kViscLaplacian] = dv * k;
-                if (energy) o.du[kViscLaplacian] = -0.5 * k * dv.norm2();
+                if (energy) o.du[kViscLaplacian] = -terms::ViscLaplacian::work(k, dv.norm2());
               }
               if (conduction) {
                 const auto& u = p[Field::Energy];
-                const double rhom = 0.5 * (rho[i] + rho[j]);
-                const double vsu = std::sqrt(std::abs(P[i] - P[j]) / rhom);
-                o.du[kConduction] = m[j] * c.prm.conduction.alpha_u * vsu * (u[i] - u[j]) / rhom * dWm;
+                o.du[kConduction] = cond.pair(m[j], u[i], u[j], P[i], P[j], rho[i], rho[j], dWm);
               }
             },
             terms, nb);
@@ -184,7 +197,6 @@ void standard_corrected(const StageContext& c, std::size_t i, std::vector<Inspec
   const Physics& ph = c.prm.physics;
   const auto& m = p[Field::Mass];
   const auto& rho = p[Field::Density];
-  const auto& h = p[Field::H];
   const auto& P = p[Field::Pressure];
   const CorrectionFields corr(p);
   const double Ai = P[i] / (rho[i] * rho[i]);
@@ -198,11 +210,7 @@ void standard_corrected(const StageContext& c, std::size_t i, std::vector<Inspec
               const Vec3 dv = velocity_difference(p, i, j);
               o.a[kPressure] = (Gi * Ai - Gj * Aj) * -m[j];
               o.a[kViscPi] = Gm * (-m[j] * pi_of(c, i, j, dv.dot(r), rr * rr));
-              if (ph.viscosity == ViscType::Laplacian) {
-                const auto& v = c.prm.visc;
-                o.a[kViscLaplacian] = dv * pair::laplacian_factor(m[j], v.nu, rho[i], rho[j], r.dot(Gm), rr * rr,
-                                                                  0.5 * (h[i] + h[j]), v.eps);
-              }
+              if (ph.viscosity == ViscType::Laplacian) o.a[kViscLaplacian] = dv * laplacian_of(c, i, j, r.dot(Gm), rr * rr);
             },
             terms, nb);
 }

@@ -128,6 +128,19 @@ const Owner kIsothermal{"the isothermal equation of state", Slot::Eos,
 const Owner kTait{"the Tait equation of state", Slot::Eos, [](const Params& p) { return p.physics.eos == EosType::Tait; }};
 const Owner kMonaghan{"the Monaghan viscosity stage", Slot::Viscosity,
                       [](const Params& p) { return p.physics.viscosity == ViscType::Monaghan; }};
+const Owner kConstantAlpha{"the Monaghan viscosity with a constant or Balsara-limited alpha", Slot::Viscosity,
+                           [](const Params& p) {
+                             return p.physics.viscosity == ViscType::Monaghan &&
+                                    p.physics.visc_switch != ViscSwitch::CullenDehnen;
+                           }};
+const Owner kSwitchable{"the Monaghan viscosity of the standard and standard-corrected forces", Slot::Viscosity,
+                        [](const Params& p) {
+                          const Physics& ph = p.physics;
+                          return ph.viscosity == ViscType::Monaghan &&
+                                 (ph.force == ForceType::Standard || ph.force == ForceType::StandardCorrected);
+                        }};
+const Owner kCullenDehnen{"the Cullen-Dehnen viscosity switch (visc.switch = cullen_dehnen)", Slot::Viscosity,
+                          [](const Params& p) { return p.physics.visc_switch == ViscSwitch::CullenDehnen; }};
 const Owner kLaplacian{"the Laplacian viscosity stage", Slot::Viscosity,
                        [](const Params& p) { return p.physics.viscosity == ViscType::Laplacian; }};
 const Owner kAnyViscosity{"a viscosity stage", Slot::Viscosity,
@@ -218,11 +231,29 @@ std::vector<ParamInfo> build() {
                     kTait, true},
                    [](Params& p) -> double& { return p.liquid.p_min; }, -1e300, 1e12));
   t.push_back(real({"visc.alpha", "dimensionless", "artificial viscosity, linear term (seed 003 eq. 3.16; seed 001 eq. 41)",
-                    "alpha", kMonaghan, true},
+                    "alpha", kConstantAlpha, true},
                    [](Params& p) -> double& { return p.visc.alpha; }, 0.0, 10.0));
   t.push_back(real({"visc.beta", "dimensionless", "artificial viscosity, quadratic term (seed 003 eq. 3.16)", "beta",
                     kMonaghan, true},
                    [](Params& p) -> double& { return p.visc.beta; }, 0.0, 20.0));
+  t.push_back(choice<ViscSwitch>({"visc.switch", "choice",
+                                  "alpha per particle: none (constant visc.alpha), balsara (visc.alpha times |div v|/"
+                                  "(|div v| + |curl v|), Balsara 1995) or cullen_dehnen (raised ahead of shocks, "
+                                  "decaying behind them: Cullen & Dehnen 2010)",
+                                  "", kSwitchable, true},
+                                 [](Params& p) -> ViscSwitch& { return p.physics.visc_switch; },
+                                 {ViscSwitch::None, ViscSwitch::Balsara, ViscSwitch::CullenDehnen}));
+  t.push_back(real({"visc.alpha_min", "dimensionless", "Cullen-Dehnen switch: alpha far from shocks", "",
+                    kCullenDehnen, true},
+                   [](Params& p) -> double& { return p.visc.alpha_min; }, 0.0, 10.0));
+  t.push_back(real({"visc.alpha_max", "dimensionless",
+                    "Cullen-Dehnen switch: alpha at a shock (the quadratic term is beta alpha / alpha_max)", "",
+                    kCullenDehnen, true},
+                   [](Params& p) -> double& { return p.visc.alpha_max; }, 1e-3, 10.0));
+  t.push_back(real({"visc.decay", "dimensionless",
+                    "Cullen-Dehnen switch: alpha decays on tau = h / (decay c) behind a shock (Cullen & Dehnen 2010: "
+                    "0.05-0.2)", "", kCullenDehnen, true},
+                   [](Params& p) -> double& { return p.visc.decay; }, 1e-3, 10.0));
   t.push_back(real({"visc.eps", "dimensionless", "eta^2 = eps h^2 regularises 1/r^2 (seed 001 eq. 42: 0.01)",
                     "visc_eps", kAnyViscosity, true},
                    [](Params& p) -> double& { return p.visc.eps; }, 1e-6, 1.0));

@@ -24,6 +24,9 @@ constexpr std::pair<const char*, PointControl> kControls[] = {{"none", PointCont
                                                              {"reinterpolate", PointControl::Reinterpolate},
                                                              {"merge_split", PointControl::MergeSplit}};
 
+constexpr std::pair<const char*, ViscSwitch> kSwitches[] = {
+    {"none", ViscSwitch::None}, {"balsara", ViscSwitch::Balsara}, {"cullen_dehnen", ViscSwitch::CullenDehnen}};
+
 template <class E, std::size_t N>
 const char* name_of(E e, const std::pair<const char*, E> (&table)[N]) {
   for (const auto& [name, value] : table)
@@ -41,5 +44,7 @@ const char* to_string(Softening s) { return name_of(s, kSoftenings); }
 bool parse(const std::string& s, Softening& out) { return parse_enum(s, out, kSoftenings); }
 const char* to_string(PointControl c) { return name_of(c, kControls); }
 bool parse(const std::string& s, PointControl& out) { return parse_enum(s, out, kControls); }
+const char* to_string(ViscSwitch s) { return name_of(s, kSwitches); }
+bool parse(const std::string& s, ViscSwitch& out) { return parse_enum(s, out, kSwitches); }
 
 }  // namespace sph

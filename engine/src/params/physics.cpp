@@ -1,5 +1,6 @@
 // Slot names, options and the combinations that make no sense (see sph/physics.h).
 #include "sph/physics.h"
+#include "sph/params.h"
 
 #include <stdexcept>
 
@@ -154,6 +155,12 @@ std::string Physics::validate() const {
            is(Slot::Force);
   if (viscosity != ViscType::None && force == ForceType::None)
     return is(Slot::Viscosity) + " acts through the momentum equation, but " + is(Slot::Force);
+  if (visc_switch != ViscSwitch::None && viscosity != ViscType::Monaghan)
+    return std::string("visc.switch = ") + to_string(visc_switch) + " sets the alpha of the Monaghan viscosity, but " +
+           is(Slot::Viscosity);
+  if (visc_switch != ViscSwitch::None && force != ForceType::Standard && force != ForceType::StandardCorrected)
+    return std::string("visc.switch = ") + to_string(visc_switch) +
+           " acts in the standard and standard-corrected pair loops, but " + is(Slot::Force);
   if (xsph == Toggle::On && density == DensityMode::None)
     return is(Slot::Xsph) + " averages with densities, but " + is(Slot::Density);
   if (conduction == Toggle::On && energy == Toggle::Off)

@@ -19,6 +19,7 @@
 #include "corrected_kernel.h"
 #include "courant.h"
 #include "pair_terms.h"
+#include "terms/visc_monaghan.h"
 
 namespace sph {
 namespace {
@@ -52,9 +53,10 @@ class ForcesCorrected final : public Stage {
         for (int l = 0; l < d; ++l) grad[3 * k + l] = &p[component(Field::VelGradXX, k, l)];
     const bool monaghan = prm.physics.viscosity == ViscType::Monaghan;
     const bool skip_walls = !c.walls_in_sums();
-    const double alpha = prm.visc.alpha, beta = prm.visc.beta, eps = prm.visc.eps, nu = prm.visc.nu;
-    const double alpha_scale = monaghan ? std::max(1.0, alpha) : 1.0;
-    const double beta_scale = monaghan ? std::max(1.0, 0.5 * beta) : 1.0;
+    const double nu = prm.visc.nu;
+    const terms::ViscMonaghan visc(c);  // constant alpha: visc.switch is refused with this form (Physics::validate)
+    const double alpha_scale = monaghan ? visc.alpha_scale : 1.0;
+    const double beta_scale = monaghan ? visc.beta_scale : 1.0;
     const double support = K.support();
     // T of particle b (3 x 3, row-major): -P I + 2 mu (D - tr D / 3 I)
     auto stress = [&](std::size_t b, double T[9]) {
@@ -102,8 +104,9 @@ class ForcesCorrected final : public Stage {
         const double inv_rhoj2 = 1.0 / (rho[j] * rho[j]);
         const double vdotr = dv[0] * r[0] + dv[1] * r[1] + dv[2] * r[2];
         vs = std::max(vs, pair::signal_speed(cs[i], cs[j], vdotr * rinv, alpha_scale, beta_scale));
-        const double Pi =
-            monaghan ? pair::monaghan_pi(vdotr, r2, hi, hj, rho[i], rho[j], cs[i], cs[j], alpha, beta, eps) : 0.0;
+        const double Pi = monaghan ? pair::monaghan_pi(vdotr, r2, hi, hj, rho[i], rho[j], cs[i], cs[j], visc.alpha,
+                                                       visc.beta, visc.eps)
+                                   : 0.0;
         for (int k = 0; k < d; ++k) {
           double t = 0.0;
           for (int l = 0; l < d; ++l) t += Ti[3 * k + l] * Gi[l] - Tj[3 * k + l] * inv_rhoj2 * Gj[l];

@@ -18,6 +18,9 @@
 #include "pair_block.h"
 #include "pair_terms.h"
 #include "sph/kernel_shapes.h"
+#include "terms/conduction.h"
+#include "terms/energy_equation.h"
+#include "terms/visc_terms.h"
 
 namespace sph {
 namespace {
@@ -30,14 +33,16 @@ struct Factors {
   std::vector<double> hinv, dnorm, A, R2;
 };
 
+/// V: the viscosity term (terms/visc_*.h); E: the energy equation on or off (terms/energy_equation.h).
 /// Cont: also the continuity rate drho_a/dt = rho_a sum_b V_b (v*_a - v*_b) . grad W_ab(h_a) with its
 /// density diffusion (density_continuity.cpp), in the same pass (barotropic flows only). Shape: the
 /// kernel's shape, fixed at compile time (one instantiation per kernel, chosen once per evaluation).
 /// ThreeD = false in 1D and 2D, where z and v_z are 0: the z terms are not computed (each would add
 /// +-0 to a sum; the results differ at most in the sign of an exact zero).
 
-template <bool GradH, ViscType V, bool Energy, bool Cont, bool ThreeD, class Shape>
+template <bool GradH, class V, class E, bool Cont, bool ThreeD, class Shape>
 void standard_loop(StageContext& c, const Shape& shape, Factors& fac) {
+  constexpr bool Energy = E::kOn;
   const Kernel& K = c.kernel;
   const Params& prm = c.prm;
   Particles& p = c.p;
@@ -53,13 +58,11 @@ void standard_loop(StageContext& c, const Shape& shape, Factors& fac) {
   std::vector<double>* dudt = Energy ? &p[Field::EnergyRate] : nullptr;
   // dh/dt of a summation density with a Newton-Raphson h: the next solve's first guess (density_summation)
   double* hrate = GradH && p.has(Field::HRate) ? p[Field::HRate].data() : nullptr;
-  const bool conduction = Energy && prm.physics.conduction == Toggle::On;
+  const terms::Conduction cond_term(c);
+  const bool conduction = Energy && cond_term.on;
   const bool skip_walls = prm.physics.walls == WallType::LennardJones;
-  const double alpha = prm.visc.alpha, beta = prm.visc.beta, eps = prm.visc.eps, nu = prm.visc.nu;
-  const double alpha_u = prm.conduction.alpha_u;
+  const V visc(c);
   const double support = K.support();
-  const double alpha_scale = V == ViscType::Monaghan ? std::max(1.0, alpha) : 1.0;
-  const double beta_scale = V == ViscType::Monaghan ? std::max(1.0, 0.5 * beta) : 1.0;
   std::unique_ptr<ContinuityOutput> cont;
   if constexpr (Cont) cont = std::make_unique<ContinuityOutput>(p, prm);
   const bool xsph = Cont && prm.physics.xsph == Toggle::On;
@@ -126,18 +129,17 @@ void standard_loop(StageContext& c, const Shape& shape, Factors& fac) {
       const double dvx = vxi - vx[j], dvy = vyi - vy[j], dvz = ThreeD ? vzi - vz[j] : 0.0;
       const double vdotr = ThreeD ? dvx * dx + dvy * dy + dvz * dz : dvx * dx + dvy * dy;
       const double w = vdotr * rinv;
-      VS[k] = pair::signal_speed(csi, cs[j], w, alpha_scale, beta_scale);
+      VS[k] = pair::signal_speed(csi, cs[j], w, visc.alpha_scale, visc.beta_scale);
       double Pi = 0.0;
-      if constexpr (V == ViscType::Monaghan)
-        Pi = pair::monaghan_pi_nb(vdotr, r2, hi, hj, rhoi, rho[j], csi, cs[j], alpha, beta, eps);
-      const double f = V == ViscType::Monaghan ? -m[j] * (Ai * dWi + Aj * dWj + Pi * dWm) * rinv
-                                               : -m[j] * (Ai * dWi + Aj * dWj) * rinv;  // times r_vec
+      if constexpr (V::kPi) Pi = visc.pi(i, j, vdotr, r2, hi, hj, rhoi, rho[j], csi, cs[j]);
+      const double f = V::kPi ? -m[j] * (Ai * dWi + Aj * dWj + Pi * dWm) * rinv
+                              : -m[j] * (Ai * dWi + Aj * dWj) * rinv;  // times r_vec
       FX[k] = f * dx;
       FY[k] = f * dy;
       if constexpr (ThreeD) FZ[k] = f * dz;
       double lap = 0.0;
-      if constexpr (V == ViscType::Laplacian) {
-        lap = pair::laplacian_factor(m[j], nu, rhoi, rho[j], r * dWm, r2, 0.5 * (hi + hj), eps);
+      if constexpr (V::kLaplacian) {
+        lap = visc.factor(m[j], rhoi, rho[j], r * dWm, r2, 0.5 * (hi + hj));
         LX[k] = lap * dvx;
         LY[k] = lap * dvy;
         if constexpr (ThreeD) LZ[k] = lap * dvz;
@@ -155,16 +157,16 @@ void standard_loop(StageContext& c, const Shape& shape, Factors& fac) {
         DR[k] = Vj * (ThreeD ? ddx * dx + ddy * dy + ddz * dz : ddx * dx + ddy * dy) * dW_r;
         DF[k] = pair::density_diffusion(Vj, rhoi, rho[j], dW_r);
       }
-      if constexpr (Energy || GradH) DU[k] = m[j] * w * dWi;  // sum_b m_b v_ab . grad W_ab(h_a)
+      if constexpr (Energy || GradH) DU[k] = terms::EnergyOn::pair(m[j], w, dWi);  // sum_b m_b v_ab . grad W_ab(h_a)
       if constexpr (Energy) {  // du/dt = Ai times that sum (seed 000 eq. 3.3.19)
-        if constexpr (V == ViscType::Monaghan) VH[k] = 0.5 * m[j] * Pi * w * dWm;  // dissipation -> heat
+        if constexpr (V::kPi) VH[k] = V::heat(m[j], Pi, w, dWm);  // dissipation -> heat
         // the Laplacian term's work -k v_ab . v_ab / 2 per pair share, as heat
-        if constexpr (V == ViscType::Laplacian)
-          VH[k] = 0.5 * lap * (ThreeD ? dvx * dvx + dvy * dvy + dvz * dvz : dvx * dvx + dvy * dvy);
+        if constexpr (V::kLaplacian)
+          VH[k] = V::work(lap, ThreeD ? dvx * dvx + dvy * dvy + dvz * dvz : dvx * dvx + dvy * dvy);
       }
     }
     double* CD = b[kCond];
-    if (Energy && conduction && alpha_u > 0.0) {
+    if (conduction) {
       const double Pi_ = P[i], ui = (*u)[i];
       const double* uu = u->data();
 #pragma omp simd
@@ -172,9 +174,7 @@ void standard_loop(StageContext& c, const Shape& shape, Factors& fac) {
         const std::uint32_t j = J[k];
         const double r = std::sqrt(R2[k]);
         const double dWm = 0.5 * (dnorm_i * shape.dw(r * hinv_i) + dnorm[j] * shape.dw(r * hinv[j]));
-        const double rhom = 0.5 * (rhoi + rho[j]);
-        const double vsu = std::sqrt(std::abs(Pi_ - P[j]) / rhom);
-        CD[k] = m[j] * alpha_u * vsu * (ui - uu[j]) / rhom * dWm;
+        CD[k] = cond_term.pair(m[j], ui, uu[j], Pi_, P[j], rhoi, rho[j], dWm);
       }
     }
     // the sums, in list order
@@ -186,7 +186,7 @@ void standard_loop(StageContext& c, const Shape& shape, Factors& fac) {
       ax += FX[k];
       ay += FY[k];
       if constexpr (ThreeD) az += FZ[k];
-      if constexpr (V == ViscType::Laplacian) {
+      if constexpr (V::kLaplacian) {
         ax += LX[k];
         ay += LY[k];
         if constexpr (ThreeD) az += LZ[k];
@@ -199,17 +199,17 @@ void standard_loop(StageContext& c, const Shape& shape, Factors& fac) {
       }
       if constexpr (Energy || GradH) du += DU[k];
       if constexpr (Energy) {
-        if constexpr (V == ViscType::Monaghan) visc_heat += VH[k];
-        if constexpr (V == ViscType::Laplacian) visc_heat -= VH[k];
+        if constexpr (V::kPi) visc_heat += VH[k];
+        if constexpr (V::kLaplacian) visc_heat -= VH[k];
       }
     }
-    if (Energy && conduction && alpha_u > 0.0)
+    if (conduction)
       for (std::size_t k = 0; k < np; ++k) cond += CD[k];
     p.a[0][i] = ax;
     p.a[1][i] = ay;
     p.a[2][i] = az;
     vsig[i] = vs;
-    if constexpr (Energy) (*dudt)[i] = Ai * du + visc_heat + cond;
+    if constexpr (Energy) (*dudt)[i] = E::rate(Ai, du, visc_heat, cond);
     // drho/dt = (1/Omega) sum_b m_b v_ab . grad W_ab(h_a), and h = eta (m/rho)^(1/d) gives
     // dh/dt = -h/(d rho) drho/dt (seed 000 eqs. 3.3.2, 3.5.1)
     if (hrate) hrate[i] = -hi / (d * rhoi) * (du / (*omega)[i]);
@@ -222,26 +222,24 @@ void standard_loop(StageContext& c, const Shape& shape, Factors& fac) {
   if constexpr (Cont) ContinuityOutput::finish(c, sum_nb, n);
 }
 
-template <bool GradH, ViscType V, bool Energy, bool Cont, class Shape>
+template <bool GradH, class V, class E, bool Cont, class Shape>
 void dispatch_dim(StageContext& c, const Shape& s, Factors& f) {
-  if (c.p.dim() == 3) standard_loop<GradH, V, Energy, Cont, true>(c, s, f);
-  else standard_loop<GradH, V, Energy, Cont, false>(c, s, f);
+  if (c.p.dim() == 3) standard_loop<GradH, V, E, Cont, true>(c, s, f);
+  else standard_loop<GradH, V, E, Cont, false>(c, s, f);
 }
 
-template <bool GradH, ViscType V, class Shape>
+template <bool GradH, class V, class Shape>
 void dispatch_energy(StageContext& c, bool energy, bool cont, const Shape& s, Factors& f) {
-  if (energy) dispatch_dim<GradH, V, true, false>(c, s, f);
-  else if (cont && !GradH) dispatch_dim<GradH, V, false, true>(c, s, f);
-  else dispatch_dim<GradH, V, false, false>(c, s, f);
+  if (energy) dispatch_dim<GradH, V, terms::EnergyOn, false>(c, s, f);
+  else if (cont && !GradH) dispatch_dim<GradH, V, terms::EnergyOff, true>(c, s, f);
+  else dispatch_dim<GradH, V, terms::EnergyOff, false>(c, s, f);
 }
 
 template <bool GradH, class Shape>
-void dispatch_visc(StageContext& c, ViscType v, bool energy, bool cont, const Shape& s, Factors& f) {
-  switch (v) {
-    case ViscType::None: dispatch_energy<GradH, ViscType::None>(c, energy, cont, s, f); break;
-    case ViscType::Monaghan: dispatch_energy<GradH, ViscType::Monaghan>(c, energy, cont, s, f); break;
-    case ViscType::Laplacian: dispatch_energy<GradH, ViscType::Laplacian>(c, energy, cont, s, f); break;
-  }
+void dispatch_visc(StageContext& c, bool energy, bool cont, const Shape& s, Factors& f) {
+  terms::with_viscosity(c.prm.physics, [&](auto tag) {
+    dispatch_energy<GradH, typename decltype(tag)::type>(c, energy, cont, s, f);
+  });
 }
 
 class ForcesStandard final : public Stage {
@@ -268,8 +266,8 @@ class ForcesStandard final : public Stage {
   bool run(StageContext& c) override {
     // the kernel shape is chosen once here, not per pair
     shape::with_shape(c.kernel.type(), c.p.dim(), [&](auto s) {
-      if (grad_h_) dispatch_visc<true>(c, c.prm.physics.viscosity, energy_, cont_, s, factors_);
-      else dispatch_visc<false>(c, c.prm.physics.viscosity, energy_, cont_, s, factors_);
+      if (grad_h_) dispatch_visc<true>(c, energy_, cont_, s, factors_);
+      else dispatch_visc<false>(c, energy_, cont_, s, factors_);
     });
     return true;
   }

@@ -16,6 +16,7 @@
 #include "pair_block.h"
 #include "pair_terms.h"
 #include "sph/kernel_shapes.h"
+#include "terms/visc_terms.h"
 
 namespace sph {
 namespace {
@@ -32,7 +33,7 @@ struct Factors {
 /// Cont: also the continuity rate drho_a/dt = rho_a sum_b V_b (v*_a - v*_b) . G_a(b) (seed 001 eq. 54;
 /// density_continuity.cpp), in the same pass. In three passes (pair_block.h): the interacting pairs,
 /// their terms (vectorised; the kernel's shape fixed at compile time), the sums in list order.
-template <int D, ViscType V, bool Cont, bool Xsph, class Shape>
+template <int D, class V, bool Cont, bool Xsph, class Shape>
 void standard_corrected_loop(StageContext& c, const Shape& shape, Factors& fac) {
   const Kernel& K = c.kernel;
   const Params& prm = c.prm;
@@ -78,9 +79,7 @@ void standard_corrected_loop(StageContext& c, const Shape& shape, Factors& fac) 
     for (int k = 0; k < D; ++k) dvx[k] = p[component(Field::XsphX, k)].data();
   double sum_nb = 0.0;
   const bool skip_walls = !c.walls_in_sums();
-  const double alpha = prm.visc.alpha, beta = prm.visc.beta, eps = prm.visc.eps, nu = prm.visc.nu;
-  const double alpha_scale = V == ViscType::Monaghan ? std::max(1.0, alpha) : 1.0;
-  const double beta_scale = V == ViscType::Monaghan ? std::max(1.0, 0.5 * beta) : 1.0;
+  const V visc(c);  // the viscosity term (terms/visc_*.h)
 #pragma omp parallel reduction(+ : sum_nb) if (p.size() >= kParallelMin)
   {
   PairBlock<kColumns> b;  // this thread's pairs of i
@@ -155,18 +154,17 @@ void standard_corrected_loop(StageContext& c, const Shape& shape, Factors& fac) 
         DR[k] = vol[j] * dot;
         DF[k] = pair::density_diffusion(vol[j], rhoi, rho[j], dWi * rinv);
       }
-      VS[k] = pair::signal_speed(csi, cs[j], vdotr * rinv, alpha_scale, beta_scale);
+      VS[k] = pair::signal_speed(csi, cs[j], vdotr * rinv, visc.alpha_scale, visc.beta_scale);
       double Pi = 0.0;
-      if constexpr (V == ViscType::Monaghan)
-        Pi = pair::monaghan_pi_nb(vdotr, r2, hi, hj, rhoi, rho[j], csi, cs[j], alpha, beta, eps);
+      if constexpr (V::kPi) Pi = visc.pi(i, j, vdotr, r2, hi, hj, rhoi, rho[j], csi, cs[j]);
       double rdG = 0.0;
       for (int q = 0; q < D; ++q) {
         const double Gm = 0.5 * (Gi[q] - Gj[q]);
         T[q][k] = m[j] * (Ai * Gi[q] - Aj * Gj[q] + Pi * Gm);
         rdG += r[q] * Gm;
       }
-      if constexpr (V == ViscType::Laplacian) {
-        const double f = pair::laplacian_factor(m[j], nu, rhoi, rho[j], rdG, r2, 0.5 * (hi + hj), eps);
+      if constexpr (V::kLaplacian) {
+        const double f = visc.factor(m[j], rhoi, rho[j], rdG, r2, 0.5 * (hi + hj));
         for (int q = 0; q < D; ++q) L[q][k] = f * dv[q];
       }
     }
@@ -177,7 +175,7 @@ void standard_corrected_loop(StageContext& c, const Shape& shape, Factors& fac) 
     for (std::size_t k = 0; k < np; ++k) {
       for (int q = 0; q < D; ++q) {
         acc[q] -= T[q][k];
-        if constexpr (V == ViscType::Laplacian) acc[q] += L[q][k];
+        if constexpr (V::kLaplacian) acc[q] += L[q][k];
       }
       vs = std::max(vs, VS[k]);
       if constexpr (Cont) {
@@ -200,11 +198,9 @@ void standard_corrected_loop(StageContext& c, const Shape& shape, Factors& fac) 
 
 template <int D, bool Cont, bool Xsph, class Shape>
 void dispatch_visc(StageContext& c, const Shape& s, Factors& f) {
-  switch (c.prm.physics.viscosity) {
-    case ViscType::None: standard_corrected_loop<D, ViscType::None, Cont, Xsph>(c, s, f); break;
-    case ViscType::Monaghan: standard_corrected_loop<D, ViscType::Monaghan, Cont, Xsph>(c, s, f); break;
-    case ViscType::Laplacian: standard_corrected_loop<D, ViscType::Laplacian, Cont, Xsph>(c, s, f); break;
-  }
+  terms::with_viscosity(c.prm.physics, [&](auto tag) {
+    standard_corrected_loop<D, typename decltype(tag)::type, Cont, Xsph>(c, s, f);
+  });
 }
 
 template <int D>

@@ -1,0 +1,27 @@
+// Physical viscosity nu with the Laplacian written in first kernel derivatives (seed 004; Morris, Fox &
+// Zhu 1997, JCP 136, 214, eq. 8): the term k_ab v_ab of the pair loops, k from pair_terms.h, and its
+// heating -1/2 sum_b k_ab |v_ab|^2 in the energy equation.
+#pragma once
+#include <string_view>
+
+#include "core/stage.h"
+#include "physics/pair_terms.h"
+
+namespace sph::terms {
+
+struct ViscLaplacian {
+  static constexpr bool kPi = false;
+  static constexpr bool kLaplacian = true;
+  static constexpr std::string_view kName = "Laplacian viscosity";
+  double nu, eps;  ///< visc.nu [length^2/time], visc.eps [dimensionless]
+  double alpha_scale = 1.0, beta_scale = 1.0;
+  explicit ViscLaplacian(const StageContext& c) : nu(c.prm.visc.nu), eps(c.prm.visc.eps) {}
+  /// k_ab of the pair: rdW = r_ab . grad W [1/length^d], hm = (h_a + h_b)/2.
+  double factor(double mj, double rhoi, double rhoj, double rdW, double r2, double hm) const {
+    return pair::laplacian_factor(mj, nu, rhoi, rhoj, rdW, r2, hm, eps);
+  }
+  /// The work k_ab |v_ab|^2 / 2 the pair's term dissipates, as heat (the loops subtract it from du_a/dt).
+  static double work(double k, double dv2) { return 0.5 * k * dv2; }
+};
+
+}  // namespace sph::terms
