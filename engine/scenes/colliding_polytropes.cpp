@@ -31,16 +31,16 @@
 #include <cmath>
 #include <numbers>
 
-#include "families.h"
 #include "reference/collision_reference.h"
 #include "reference/lane_emden.h"
 #include "relaxed_polytrope.h"
+#include "scene_registration.h"
 #include "scene_util.h"
 #include "sph/config.h"
 
 namespace sph::scenes {
 
-SceneSpec colliding_polytropes_scene() {
+SPH_SCENE(190, colliding_polytropes_scene) {
   SceneSpec s;
   s.name = "colliding_polytropes";
   s.category = "gravity / self-gravitating spheres (seed 003)";

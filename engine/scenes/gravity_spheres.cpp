@@ -10,8 +10,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "families.h"
 #include "nbody_common.h"
+#include "scene_registration.h"
 #include "scene_util.h"
 
 namespace sph::scenes {
@@ -43,7 +43,7 @@ SceneSpec sphere_base() {
 
 }  // namespace
 
-SceneSpec dust_sphere_scene() {
+SPH_SCENE(150, dust_sphere_scene) {
   SceneSpec s = sphere_base();
   s.name = "dust_sphere";
   s.description = "seed 003 §2.7: a pressureless sphere rho ~ 1/r collapses under its own gravity (N = 4000, eps = 0.1)";
@@ -64,7 +64,7 @@ SceneSpec dust_sphere_scene() {
   return s;
 }
 
-SceneSpec dust_collision_scene() {
+SPH_SCENE(160, dust_collision_scene) {
   SceneSpec s = sphere_base();
   s.name = "dust_collision";
   s.description = "seed 003 §3.4.2: two rho ~ 1/r dust spheres meet head-on (4 apart, approaching at 0.5 each)";
@@ -89,7 +89,7 @@ SceneSpec dust_collision_scene() {
   return s;
 }
 
-SceneSpec evrard_scene() {
+SPH_SCENE(170, evrard_scene) {
   SceneSpec s = sphere_base();
   s.name = "evrard";
   s.description = "seed 003 §3.4.1 (Evrard 1988): a cold gas sphere rho ~ 1/r collapses, bounces and heats (N = 4096)";

@@ -7,14 +7,14 @@
 // (scene.start = 0) or a glass (1; glass.h), equal masses 1/N.
 #include <cmath>
 
-#include "families.h"
+#include "scene_registration.h"
 #include "start_positions.h"
 #include "reference/gresho_reference.h"
 #include "scene_util.h"
 
 namespace sph::scenes {
 
-SceneSpec gresho_scene() {
+SPH_SCENE(250, gresho_scene) {
   // no shocks: a weak viscosity only keeps the particles ordered (L1 at 64^2: 0.067, against 0.094
   // with alpha = 1, beta = 2, and 0.15 at 32^2 without viscosity)
   SceneSpec s = gas_test_scene(

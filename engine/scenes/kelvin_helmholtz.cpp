@@ -10,7 +10,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "families.h"
+#include "scene_registration.h"
 #include "start_positions.h"
 #include "kh_profile.h"
 #include "reference/kh_reference.h"
@@ -18,7 +18,7 @@
 
 namespace sph::scenes {
 
-SceneSpec kelvin_helmholtz_scene() {
+SPH_SCENE(260, kelvin_helmholtz_scene) {
   SceneSpec s = gas_test_scene(
       "kelvin_helmholtz", "gas dynamics / multidimensional tests",
       "Kelvin-Helmholtz, McNally et al. 2012 smooth layers (rho 1 | 2, v_x +-0.5, P 2.5, gamma 5/3), periodic "

@@ -13,8 +13,8 @@
 #include <memory>
 
 #include "close_packed.h"
-#include "families.h"
 #include "reference/noh_reference.h"
+#include "scene_registration.h"
 #include "scene_util.h"
 
 namespace sph::scenes {
@@ -52,7 +52,7 @@ SceneSetup build_noh(const Params& prm, const SceneValues& v) {
 
 }  // namespace
 
-SceneSpec noh_scene() {
+SPH_SCENE(240, noh_scene) {
   SceneSpec s = gas_test_scene(
       "noh", "gas dynamics / implosions",
       "Noh implosion, 2D: a cold disc (rho = 1, u = 1e-6) converging at speed 1, gamma 5/3, hexagonal lattice 200 "

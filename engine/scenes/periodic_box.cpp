@@ -3,7 +3,7 @@
 // Seed 000's equations (3.3.29) have no artificial viscosity, so these scenes turn it off.
 #include <cmath>
 
-#include "families.h"
+#include "scene_registration.h"
 #include "scene_util.h"
 
 namespace sph::scenes {
@@ -55,7 +55,7 @@ std::vector<SceneParam> lattice_params(double n_side) {
 
 }  // namespace
 
-SceneSpec box_lattice_scene() {
+SPH_SCENE(40, box_lattice_scene) {
   SceneSpec s = box_base();
   s.name = "box_lattice";
   s.description = "seed 000 §4.1.2: 10x10 lattice at rest in a periodic box; stays at rest (|v| ~ round-off)";
@@ -64,7 +64,7 @@ SceneSpec box_lattice_scene() {
   return s;
 }
 
-SceneSpec box_perturbed_scene() {
+SPH_SCENE(50, box_perturbed_scene) {
   SceneSpec s = box_base();
   s.name = "box_perturbed";
   s.description = "seed 000 §4.1.3: the lattice with one particle displaced; disorder spreads (t ~ 12)";
@@ -81,7 +81,7 @@ SceneSpec box_perturbed_scene() {
   return s;
 }
 
-SceneSpec box_random_scene() {
+SPH_SCENE(60, box_random_scene) {
   SceneSpec s = box_base();
   s.name = "box_random";
   s.description = "seed 000 §4.1.4: 500 random particles in a periodic box, quintic kernel; relaxes";

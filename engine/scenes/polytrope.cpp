@@ -9,15 +9,15 @@
 #include <cmath>
 #include <numbers>
 
-#include "families.h"
 #include "reference/lane_emden.h"
 #include "reference/polytrope_reference.h"
+#include "scene_registration.h"
 #include "scene_util.h"
 #include "sph/config.h"
 
 namespace sph::scenes {
 
-SceneSpec polytrope_scene() {
+SPH_SCENE(180, polytrope_scene) {
   SceneSpec s;
   s.name = "polytrope";
   s.category = "gravity / self-gravitating spheres (seed 003)";

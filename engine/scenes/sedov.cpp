@@ -17,8 +17,8 @@
 #include <memory>
 
 #include "close_packed.h"
-#include "families.h"
 #include "reference/sedov_reference.h"
+#include "scene_registration.h"
 #include "scene_util.h"
 #include "sph/kernel.h"
 
@@ -94,7 +94,7 @@ SceneSpec blast_scene(int dim, const char* name, const char* description, double
 
 }  // namespace
 
-SceneSpec sedov_scene() {
+SPH_SCENE(220, sedov_scene) {
   return blast_scene(2, "sedov",
                      "Sedov-Taylor blast, 2D: E = 1 at the centre of rho = 1, p0 = 1e-5, gamma 5/3, hexagonal lattice "
                      "160 across [-0.5,0.5]^2 periodic, t = 0.1; pass: shock radius within 2% of xi0 (E t^2/rho)^(1/4), "
@@ -102,7 +102,7 @@ SceneSpec sedov_scene() {
                      0.5, 160);
 }
 
-SceneSpec sedov3d_scene() {
+SPH_SCENE(230, sedov3d_scene) {
   return blast_scene(3, "sedov3d",
                      "Sedov-Taylor blast, 3D: E = 1 at the centre of rho = 1, p0 = 1e-5, gamma 5/3, BCC lattice 32 "
                      "across [-0.6,0.6]^3 periodic, t = 0.1; shock radius against xi0 (E t^2/rho)^(1/5), |dE/E|",

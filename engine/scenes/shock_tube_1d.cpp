@@ -4,8 +4,8 @@
 #include <memory>
 #include <vector>
 
-#include "families.h"
 #include "reference/riemann_reference.h"
+#include "scene_registration.h"
 #include "scene_util.h"
 #include "sph/riemann.h"
 
@@ -117,7 +117,7 @@ std::vector<SceneParam> tube_params(double x_lo, double x_hi, double rl, double 
 
 }  // namespace
 
-SceneSpec sod_scene() {
+SPH_SCENE(10, sod_scene) {
   SceneSpec s;
   s.name = "sod";
   s.category = "gas dynamics / shock tubes";
@@ -147,7 +147,7 @@ SceneSpec sod_scene() {
   return s;
 }
 
-SceneSpec castellanos_scene() {
+SPH_SCENE(20, castellanos_scene) {
   SceneSpec s = sod_scene();
   s.name = "shocktube_castellanos";
   s.description = "seed 003 tube: x in [-0.6,0.6], 1280 | 320 equal-mass particles, rho,p = 1,1 | 0.25,0.1795";
@@ -187,7 +187,7 @@ SceneSpec riemann_variant(const char* name, const char* description, double x_lo
 // t = 0. Each tube is long enough that no wall's wave (nor the fan) reaches the other waves before
 // t_end, so the reference applies to the end (RiemannReference::valid_until; Toro's [0, 1] is widened
 // for tests 1, 2 and 5 and Lax, with the particle spacing kept).
-std::vector<SceneSpec> riemann_variant_scenes() {
+SPH_SCENES(30, riemann_variant_scenes) {
   return {
       riemann_variant("lax", "Lax's tube, rho,v,p = 0.445,0.698,3.528 | 0.5,0,0.571, t = 0.14", -1.5, 0.5, 0.0,
                       {0.445, 0.698, 3.528}, {0.5, 0.0, 0.571}, 600, 0.14),

@@ -9,8 +9,8 @@
 // the reference until a wave reaches a wall.
 #include <cmath>
 
-#include "families.h"
 #include "reference/riemann_reference.h"
+#include "scene_registration.h"
 #include "scene_util.h"
 #include "sph/riemann.h"
 
@@ -37,7 +37,7 @@ RightLattice right_lattice(const SceneValues& v) {
 
 }  // namespace
 
-SceneSpec tube2d_scene() {
+SPH_SCENE(70, tube2d_scene) {
   SceneSpec s;
   s.name = "tube2d";
   s.category = "gas dynamics / shock tubes";
