@@ -13,6 +13,7 @@
 #include "nbody_common.h"
 #include "scene_registration.h"
 #include "scene_util.h"
+#include "shared_setups.h"
 
 namespace sph::scenes {
 namespace {
@@ -122,7 +123,7 @@ SPH_SCENE(170, evrard_scene) {
       p[Field::H][i] = eta * std::cbrt(m / rho);
       if (p.has(Field::Energy)) p[Field::Energy][i] = v.at("u0");
     }
-    SceneSetup out{std::move(p), {}, std::cbrt(4.0 * kPi / 3.0 / static_cast<double>(n)), 0.0};
+    SceneSetup out{std::move(p), {}, sphere_spacing(n, 1.0), 0.0};
     out.domain.lo = {-1.5, -1.5, -1.5};
     out.domain.hi = {1.5, 1.5, 1.5};
     return out;

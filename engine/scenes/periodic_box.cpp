@@ -5,6 +5,7 @@
 
 #include "scene_registration.h"
 #include "scene_util.h"
+#include "shared_setups.h"
 
 namespace sph::scenes {
 namespace {
@@ -23,28 +24,18 @@ SceneSpec box_base() {
 }
 
 SceneSetup periodic_domain(Particles p, double spacing) {
-  SceneSetup s{std::move(p), {}, spacing, 0.0};
-  s.domain.lo = {0, 0, 0};
-  s.domain.hi = {1, 1, 1};
-  s.domain.bc = {Boundary::Periodic, Boundary::Periodic, Boundary::Open};
-  return s;
+  return {std::move(p), periodic_box(2, {0, 0, 0}, {1, 1, 1}), spacing, 0.0};
 }
 
 /// n x n lattice at cell centres, mass m, u = u0; h guess from the lattice density.
 SceneSetup lattice(const SceneSpec& spec, const Params& prm, const SceneValues& v) {
   const auto n = static_cast<std::size_t>(v.at("n_side"));
-  Particles p = make_particles(prm, spec.dim, n * n);
   const double dx = 1.0 / static_cast<double>(n), eta = effective_eta(prm, 2);
+  std::vector<Vec3> x;
+  x.reserve(n * n);
   for (std::size_t j = 0; j < n; ++j)
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::size_t k = j * n + i;
-      p.x[0][k] = (i + 0.5) * dx;
-      p.x[1][k] = (j + 0.5) * dx;
-      p[Field::Mass][k] = v.at("mass");
-      p[Field::H][k] = eta * dx;
-      if (p.has(Field::Energy)) p[Field::Energy][k] = v.at("u0");
-    }
-  return periodic_domain(std::move(p), dx);
+    for (std::size_t i = 0; i < n; ++i) x.push_back({(i + 0.5) * dx, (j + 0.5) * dx, 0.0});
+  return periodic_domain(gas_particles(prm, spec.dim, x, v.at("mass"), eta * dx, v.at("u0")), dx);
 }
 
 std::vector<SceneParam> lattice_params(double n_side) {
@@ -92,17 +83,15 @@ SPH_SCENE(60, box_random_scene) {
               {"seed", 2017, 0, 1e15, true, "random seed (same seed, same particles on every platform)", "dimensionless (random seed)"}};
   s.build = [s](const Params& prm, const SceneValues& v) {
     const auto n = static_cast<std::size_t>(v.at("count"));
-    Particles p = make_particles(prm, s.dim, n);
     Random rng(static_cast<std::uint64_t>(v.at("seed")));
     const double h = effective_eta(prm, 2) / std::sqrt(static_cast<double>(n));
-    for (std::size_t k = 0; k < n; ++k) {
-      p.x[0][k] = rng.uniform();
-      p.x[1][k] = rng.uniform();
-      p[Field::Mass][k] = v.at("mass");
-      p[Field::H][k] = h;
-      if (p.has(Field::Energy)) p[Field::Energy][k] = v.at("u0");
+    std::vector<Vec3> x(n);
+    for (Vec3& r : x) {
+      r.x = rng.uniform();  // x before y: the random sequence of every platform
+      r.y = rng.uniform();
     }
-    return periodic_domain(std::move(p), 1.0 / std::sqrt(static_cast<double>(n)));
+    return periodic_domain(gas_particles(prm, s.dim, x, v.at("mass"), h, v.at("u0")),
+                           1.0 / std::sqrt(static_cast<double>(n)));
   };
   return s;
 }
