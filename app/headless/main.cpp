@@ -1,10 +1,12 @@
 // sph: the headless program. `sph list`, `sph check SCENE`, `sph run SCENE [...]`, `sph converge SCENE [...]`,
-// `sph bench [SCENE...]`, `sph export-ics SCENE`, `sph help [SCENE]`, `sph params`, `sph lesson show|check FILE`.
+// `sph bench [SCENE...]`, `sph export-ics SCENE`, `sph help [SCENE]`, `sph params`, `sph lesson show|check FILE`,
+// `sph scene-json NAME`, `sph write-assets DIR`.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
 
+#include "cli_assets.h"
 #include "cli_bench.h"
 #include "cli_converge.h"
 #include "cli_export.h"
@@ -136,6 +138,14 @@ int main(int argc, char** argv) {
   lesson->add_option("action", lesson_opt.action, "show or check")->required()->check(CLI::IsMember({"show", "check"}));
   lesson->add_option("file", lesson_opt.file, "the lesson's JSON file")->required();
   lesson->add_option("--threads", lesson_opt.threads, "OpenMP threads")->check(CLI::Range(1, 1024));
+  std::string scene_json_name, assets_dir;
+  auto* scene_json = app.add_subcommand("scene-json", "print the scene file of a built-in scene at its compiled defaults "
+                                                      "(assets/scenes/NAME.json; exit 3 for an unknown name)");
+  scene_json->add_option("name", scene_json_name, "built-in scene name")->required();
+  auto* write_assets = app.add_subcommand("write-assets", "write DIR/NAME.json for every built-in scene at its compiled "
+                                                          "defaults (regenerates assets/scenes; exit 4 if DIR is not "
+                                                          "a writable folder)");
+  write_assets->add_option("dir", assets_dir, "the folder, e.g. assets/scenes")->required();
   for (CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) sub->allow_extras();
 
   if (report_unknown_command(app, argc, argv)) return kUsage;
@@ -162,6 +172,8 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("params")) return params_command();
     if (app.got_subcommand("resume")) return resume_command(resume_dir, resume_threads, resume_until, resume_quiet);
     if (app.got_subcommand("lesson")) return lesson_command(lesson_opt);
+    if (app.got_subcommand("scene-json")) return scene_json_command(scene_json_name);
+    if (app.got_subcommand("write-assets")) return write_assets_command(assets_dir);
     return run_command(opt);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "sph: internal error: %s\n", e.what());

@@ -12,9 +12,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "families.h"
 #include "reference/burgers_exact.h"
 #include "reference/burgers_reference.h"
+#include "scene_registration.h"
 #include "scene_util.h"
 #include "sph/config.h"
 
@@ -84,7 +84,7 @@ SceneSpec burgers_base(FpmType type) {
 
 }  // namespace
 
-SceneSpec burgers_viscous_scene() {
+SPH_SCENE(200, burgers_viscous_scene) {
   SceneSpec s = burgers_base(FpmType::BurgersViscous);
   s.name = "burgers_viscous";
   s.description = "seed 002: viscous Burgers (eps = 0.005) by FPM from the ramp, 300 points, Euler; e(h) against eq. 22 "
@@ -92,7 +92,7 @@ SceneSpec burgers_viscous_scene() {
   return s;
 }
 
-SceneSpec burgers_upwind_scene() {
+SPH_SCENE(210, burgers_upwind_scene) {
   SceneSpec s = burgers_base(FpmType::BurgersUpwind);
   s.name = "burgers_upwind";
   s.description = "seed 002: inviscid Burgers by FPM with one-sided (upwind) MLS, 300 points, Euler; e(h) against eq. 22";

@@ -31,22 +31,19 @@
 #include <cmath>
 #include <numbers>
 
-#include "families.h"
 #include "reference/collision_reference.h"
 #include "reference/lane_emden.h"
 #include "relaxed_polytrope.h"
+#include "scene_registration.h"
 #include "scene_util.h"
-#include "sph/config.h"
+#include "shared_setups.h"
 
 namespace sph::scenes {
 
-SceneSpec colliding_polytropes_scene() {
-  SceneSpec s;
-  s.name = "colliding_polytropes";
-  s.category = "gravity / self-gravitating spheres (seed 003)";
-  s.description =
-      "seed 003 §3.4.4: two relaxed n = 1 polytropes collide head-on and merge (|dE/E| <= 1e-2, |P| <= 5e-5 to t = 6)";
-  s.dim = 3;
+SPH_SCENE(190, colliding_polytropes_scene) {
+  SceneSpec s = polytrope_base(
+      "colliding_polytropes",
+      "seed 003 §3.4.4: two relaxed n = 1 polytropes collide head-on and merge (|dE/E| <= 1e-2, |P| <= 5e-5 to t = 6)");
   s.params = {{"n", 2000, 8, 1e6, true, "particles per star", "count"},
               {"d", 4.0, 2.0, 1e3, false, "distance between the centres along x [R] (2: touching)", "R (star radius)"},
               {"v", 1.0, 0.0, 1e3, false,
@@ -58,22 +55,12 @@ SceneSpec colliding_polytropes_scene() {
   Params& d = s.defaults;
   d.physics.eos = EosType::IdealGas;
   d.physics.energy = Toggle::On;
-  d.physics.gravity = GravityType::Tree;
-  d.gravity.softening = Softening::Kernel;
-  d.gas.gamma = 2.0;  // n = 1
-  d.gas.K = 2.0 / std::numbers::pi;
-  d.visc.alpha = 1.0;
-  d.visc.beta = 2.0;
-  d.time.integrator = IntegratorType::Leapfrog;
   d.time.t_end = 6.0;
   d.time.dt_out = 0.1;
   s.energy_bound = 2e-2;  // measured to t = 6: 9.7e-3 (the merger's shocks at the tree's force error)
   s.allow(Slot::Eos, {"ideal_gas"});
-  s.allow(Slot::Walls, {"none"});
-  s.allow(Slot::Gravity, {"tree", "direct"});
   s.build = [](const Params& prm, const SceneValues& v) {
-    if (!(prm.gas.gamma > 4.0 / 3.0))
-      throw ConfigError("gas.gamma = " + std::to_string(prm.gas.gamma) + ": a polytrope needs gamma > 4/3 (n < 3)");
+    const LaneEmden le = star_profile(prm);  // checks gamma before the relaxation
     const auto n = static_cast<std::size_t>(v.at("n"));
     const auto star = relaxed_polytrope(prm, n, static_cast<std::uint64_t>(v.at("seed")), v.at("relax"));
     const double sep = v.at("d"), b = v.at("b"), speed = v.at("v"), g = prm.gas.gamma;
@@ -89,8 +76,8 @@ SceneSpec colliding_polytropes_scene() {
       p[Field::H][i] = star->h[k];
       if (p.has(Field::Energy)) p[Field::Energy][i] = prm.gas.K * std::pow(star->rho[k], g - 1.0) / (g - 1.0);
     }
-    const double R = polytrope_scales(LaneEmden(1.0 / (g - 1.0)), 1.0, prm.gas.K, prm.gravity.G).R;
-    SceneSetup out{std::move(p), {}, std::cbrt(4.0 * std::numbers::pi / 3.0 / static_cast<double>(n)) * R, 0.0};
+    const double R = star_scales(le, prm).R;
+    SceneSetup out{std::move(p), {}, sphere_spacing(n, R), 0.0};
     const double half[3] = {0.5 * sep + 1.5 * R, 0.5 * b + 1.5 * R, 1.5 * R};
     for (int k = 0; k < 3; ++k) { out.domain.lo[k] = -half[k]; out.domain.hi[k] = half[k]; }
     return out;

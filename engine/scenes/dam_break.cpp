@@ -9,9 +9,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "families.h"
 #include "liquid_tank.h"
 #include "reference/dam_break_reference.h"
+#include "scene_registration.h"
 #include "scene_util.h"
 
 namespace sph::scenes {
@@ -29,7 +29,7 @@ Params liquid_defaults(double H, double alpha = 0.1) {
 
 }  // namespace
 
-SceneSpec dam_break_scene() {
+SPH_SCENE(90, dam_break_scene) {
   SceneSpec s;
   s.name = "dam_break";
   s.category = "free-surface liquids (seed 001)";
@@ -63,7 +63,7 @@ SceneSpec dam_break_scene() {
   return s;
 }
 
-SceneSpec dam_break_slope_scene() {
+SPH_SCENE(100, dam_break_slope_scene) {
   SceneSpec s;
   s.name = "dam_break_slope";
   s.category = "free-surface liquids (seed 001)";

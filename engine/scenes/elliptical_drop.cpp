@@ -9,9 +9,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "families.h"
 #include "reference/drop_reference.h"
 #include "liquid_tank.h"
+#include "scene_registration.h"
 #include "scene_util.h"
 #include "sph/eos.h"
 
@@ -60,7 +60,7 @@ std::vector<Vec3> random_disc(std::size_t count, std::uint64_t seed) {
 
 }  // namespace
 
-SceneSpec elliptical_drop_scene() {
+SPH_SCENE(80, elliptical_drop_scene) {
   SceneSpec s;
   s.name = "elliptical_drop";
   s.category = "free-surface liquids (seed 001)";

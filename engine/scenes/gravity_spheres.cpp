@@ -10,9 +10,10 @@
 #include <cmath>
 #include <numbers>
 
-#include "families.h"
 #include "nbody_common.h"
+#include "scene_registration.h"
 #include "scene_util.h"
+#include "shared_setups.h"
 
 namespace sph::scenes {
 namespace {
@@ -43,7 +44,7 @@ SceneSpec sphere_base() {
 
 }  // namespace
 
-SceneSpec dust_sphere_scene() {
+SPH_SCENE(150, dust_sphere_scene) {
   SceneSpec s = sphere_base();
   s.name = "dust_sphere";
   s.description = "seed 003 §2.7: a pressureless sphere rho ~ 1/r collapses under its own gravity (N = 4000, eps = 0.1)";
@@ -64,7 +65,7 @@ SceneSpec dust_sphere_scene() {
   return s;
 }
 
-SceneSpec dust_collision_scene() {
+SPH_SCENE(160, dust_collision_scene) {
   SceneSpec s = sphere_base();
   s.name = "dust_collision";
   s.description = "seed 003 §3.4.2: two rho ~ 1/r dust spheres meet head-on (4 apart, approaching at 0.5 each)";
@@ -89,7 +90,7 @@ SceneSpec dust_collision_scene() {
   return s;
 }
 
-SceneSpec evrard_scene() {
+SPH_SCENE(170, evrard_scene) {
   SceneSpec s = sphere_base();
   s.name = "evrard";
   s.description = "seed 003 §3.4.1 (Evrard 1988): a cold gas sphere rho ~ 1/r collapses, bounces and heats (N = 4096)";
@@ -122,7 +123,7 @@ SceneSpec evrard_scene() {
       p[Field::H][i] = eta * std::cbrt(m / rho);
       if (p.has(Field::Energy)) p[Field::Energy][i] = v.at("u0");
     }
-    SceneSetup out{std::move(p), {}, std::cbrt(4.0 * kPi / 3.0 / static_cast<double>(n)), 0.0};
+    SceneSetup out{std::move(p), {}, sphere_spacing(n, 1.0), 0.0};
     out.domain.lo = {-1.5, -1.5, -1.5};
     out.domain.hi = {1.5, 1.5, 1.5};
     return out;

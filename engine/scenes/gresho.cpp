@@ -7,14 +7,15 @@
 // (scene.start = 0) or a glass (1; glass.h), equal masses 1/N.
 #include <cmath>
 
-#include "families.h"
+#include "scene_registration.h"
 #include "start_positions.h"
 #include "reference/gresho_reference.h"
 #include "scene_util.h"
+#include "shared_setups.h"
 
 namespace sph::scenes {
 
-SceneSpec gresho_scene() {
+SPH_SCENE(250, gresho_scene) {
   // no shocks: a weak viscosity only keeps the particles ordered (L1 at 64^2: 0.067, against 0.094
   // with alpha = 1, beta = 2, and 0.15 at 32^2 without viscosity)
   SceneSpec s = gas_test_scene(
@@ -32,23 +33,14 @@ SceneSpec gresho_scene() {
     const std::vector<Vec3>& x = start.x;
     const double dx = start.spacing;
     const std::size_t n = x.size();
-    Particles p = make_particles(prm, dim, n);
-    const double m = 1.0 / static_cast<double>(n), eta = effective_eta(prm, dim);
+    Particles p = gas_particles(prm, dim, x, 1.0 / static_cast<double>(n), effective_eta(prm, dim) * dx, 0.0);
     for (std::size_t i = 0; i < n; ++i) {
       const double r = std::hypot(x[i].x, x[i].y), vphi = gresho_vphi(r);
-      p.x[0][i] = x[i].x;
-      p.x[1][i] = x[i].y;
       p.v[0][i] = r > 0.0 ? -vphi * x[i].y / r : 0.0;
       p.v[1][i] = r > 0.0 ? vphi * x[i].x / r : 0.0;
-      p[Field::Mass][i] = m;
-      p[Field::H][i] = eta * dx;
       if (p.has(Field::Energy)) p[Field::Energy][i] = energy_from_pressure(gresho_pressure(r), 1.0, prm.gas.gamma);
     }
-    SceneSetup out{std::move(p), {}, dx, 0.0};
-    out.domain.lo = {-0.5, -0.5, 0.0};
-    out.domain.hi = {0.5, 0.5, 1.0};
-    out.domain.bc = {Boundary::Periodic, Boundary::Periodic, Boundary::Open};
-    return out;
+    return SceneSetup{std::move(p), periodic_box(dim, {-0.5, -0.5, 0.0}, {0.5, 0.5, 1.0}), dx, 0.0};
   };
   s.initial_pressure = [](const Vec3& x, const SceneValues&) { return gresho_pressure(std::hypot(x.x, x.y)); };
   s.reference = [](const Params&, const SceneValues&) { return make_gresho_reference(); };

@@ -3,14 +3,14 @@
 // artificial viscosity. Dummy (default) or Lennard-Jones walls.
 #include <cmath>
 
-#include "families.h"
 #include "liquid_tank.h"
 #include "reference/hydrostatic_reference.h"
+#include "scene_registration.h"
 #include "scene_util.h"
 
 namespace sph::scenes {
 
-SceneSpec hydrostatic_tank_scene() {
+SPH_SCENE(110, hydrostatic_tank_scene) {
   SceneSpec s;
   s.name = "hydrostatic_tank";
   s.category = "free-surface liquids (seed 001)";

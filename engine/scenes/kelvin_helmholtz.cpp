@@ -10,15 +10,16 @@
 #include <cmath>
 #include <numbers>
 
-#include "families.h"
+#include "scene_registration.h"
 #include "start_positions.h"
 #include "kh_profile.h"
 #include "reference/kh_reference.h"
 #include "scene_util.h"
+#include "shared_setups.h"
 
 namespace sph::scenes {
 
-SceneSpec kelvin_helmholtz_scene() {
+SPH_SCENE(260, kelvin_helmholtz_scene) {
   SceneSpec s = gas_test_scene(
       "kelvin_helmholtz", "gas dynamics / multidimensional tests",
       "Kelvin-Helmholtz, McNally et al. 2012 smooth layers (rho 1 | 2, v_x +-0.5, P 2.5, gamma 5/3), periodic "
@@ -40,23 +41,16 @@ SceneSpec kelvin_helmholtz_scene() {
     const std::vector<Vec3>& x = start.x;
     const double dx = start.spacing;
     const std::size_t n = x.size();
-    Particles p = make_particles(prm, dim, n);
-    const double area = 1.0 / static_cast<double>(n), eta = effective_eta(prm, dim);
-    for (std::size_t i = 0; i < n; ++i) {
+    const double area = 1.0 / static_cast<double>(n);
+    Particles p = gas_particles(prm, dim, x, area, effective_eta(prm, dim) * dx, 0.0);
+    for (std::size_t i = 0; i < n; ++i) {  // masses follow the density on the evenly spaced start
       const double rho = kh::density(x[i].y, L);
-      p.x[0][i] = x[i].x;
-      p.x[1][i] = x[i].y;
       p.v[0][i] = kh::velocity(x[i].y, L);
       p.v[1][i] = A * std::sin(4.0 * std::numbers::pi * x[i].x);
       p[Field::Mass][i] = rho * area;
-      p[Field::H][i] = eta * dx;
       if (p.has(Field::Energy)) p[Field::Energy][i] = energy_from_pressure(kh::kPressure, rho, prm.gas.gamma);
     }
-    SceneSetup out{std::move(p), {}, dx, 0.0};
-    out.domain.lo = {0.0, 0.0, 0.0};
-    out.domain.hi = {1.0, 1.0, 1.0};
-    out.domain.bc = {Boundary::Periodic, Boundary::Periodic, Boundary::Open};
-    return out;
+    return SceneSetup{std::move(p), periodic_box(dim, {0.0, 0.0, 0.0}, {1.0, 1.0, 1.0}), dx, 0.0};
   };
   s.initial_pressure = [](const Vec3&, const SceneValues&) { return kh::kPressure; };
   s.reference = [](const Params& prm, const SceneValues& v) {

@@ -9,9 +9,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "families.h"
 #include "nbody_common.h"
 #include "reference/nbody_reference.h"
+#include "scene_registration.h"
 
 namespace sph::scenes {
 namespace {
@@ -43,7 +43,7 @@ std::vector<Body> solar_bodies() {
 
 }  // namespace
 
-SceneSpec two_body_fall_scene() {
+SPH_SCENE(120, two_body_fall_scene) {
   SceneSpec s;
   s.name = "two_body_fall";
   s.category = "gravity / N-body (seed 003 ch. 2)";
@@ -62,7 +62,7 @@ SceneSpec two_body_fall_scene() {
   return s;
 }
 
-SceneSpec kepler_scene() {
+SPH_SCENE(130, kepler_scene) {
   SceneSpec s;
   s.name = "kepler";
   s.category = "gravity / N-body (seed 003 ch. 2)";
@@ -84,7 +84,7 @@ SceneSpec kepler_scene() {
   return s;
 }
 
-SceneSpec solar_system_scene() {
+SPH_SCENE(140, solar_system_scene) {
   SceneSpec s;
   s.name = "solar_system";
   s.category = "gravity / N-body (seed 003 ch. 2)";

@@ -13,9 +13,10 @@
 #include <memory>
 
 #include "close_packed.h"
-#include "families.h"
 #include "reference/noh_reference.h"
+#include "scene_registration.h"
 #include "scene_util.h"
+#include "shared_setups.h"
 
 namespace sph::scenes {
 namespace {
@@ -31,18 +32,12 @@ SceneSetup build_noh(const Params& prm, const SceneValues& v) {
   std::vector<Vec3> inside;
   for (const Vec3& x : lat.x)
     if (x.norm() < R0) inside.push_back(x);
-  Particles p = make_particles(prm, 2, inside.size());
-  const double h0 = effective_eta(prm, 2) * lat.spacing;
-  for (std::size_t i = 0; i < inside.size(); ++i) {
+  Particles p = gas_particles(prm, 2, inside, m, effective_eta(prm, 2) * lat.spacing, v.at("u0"));
+  for (std::size_t i = 0; i < inside.size(); ++i) {  // radial inflow at speed v0
     const Vec3& x = inside[i];
     const double r = x.norm(), s = r > 0.0 ? -v.at("v0") / r : 0.0;
-    p.x[0][i] = x.x;
-    p.x[1][i] = x.y;
     p.v[0][i] = s * x.x;
     p.v[1][i] = s * x.y;
-    p[Field::Mass][i] = m;
-    p[Field::H][i] = h0;
-    if (p.has(Field::Energy)) p[Field::Energy][i] = v.at("u0");
   }
   SceneSetup out{std::move(p), {}, lat.spacing, 0.0};
   out.domain.lo = {-R0, -R0, 0.0};
@@ -52,7 +47,7 @@ SceneSetup build_noh(const Params& prm, const SceneValues& v) {
 
 }  // namespace
 
-SceneSpec noh_scene() {
+SPH_SCENE(240, noh_scene) {
   SceneSpec s = gas_test_scene(
       "noh", "gas dynamics / implosions",
       "Noh implosion, 2D: a cold disc (rho = 1, u = 1e-6) converging at speed 1, gamma 5/3, hexagonal lattice 200 "

@@ -9,44 +9,30 @@
 #include <cmath>
 #include <numbers>
 
-#include "families.h"
 #include "reference/lane_emden.h"
 #include "reference/polytrope_reference.h"
+#include "scene_registration.h"
 #include "scene_util.h"
-#include "sph/config.h"
+#include "shared_setups.h"
 
 namespace sph::scenes {
 
-SceneSpec polytrope_scene() {
-  SceneSpec s;
-  s.name = "polytrope";
-  s.category = "gravity / self-gravitating spheres (seed 003)";
-  s.description = "seed 003 §3.4.3: a polytropic star (n = 1) from the Lane-Emden solution, relaxed by damping";
-  s.dim = 3;
+SPH_SCENE(180, polytrope_scene) {
+  SceneSpec s = polytrope_base("polytrope",
+                               "seed 003 §3.4.3: a polytropic star (n = 1) from the Lane-Emden solution, relaxed by damping");
   s.params = {{"n", 4000, 8, 1e7, true, "number of particles", "count"},
               {"seed", 1, 0, 1e9, true, "random seed of the placement", "dimensionless (random seed)"}};
   Params& d = s.defaults;
   d.physics.eos = EosType::Polytropic;
   d.physics.energy = Toggle::Off;
   d.physics.body_force = BodyForce::Damping;
-  d.physics.gravity = GravityType::Tree;
-  d.gravity.softening = Softening::Kernel;
-  d.gas.gamma = 2.0;  // n = 1
-  d.gas.K = 2.0 / std::numbers::pi;
   d.body.tau = 0.1;
-  d.visc.alpha = 1.0;
-  d.visc.beta = 2.0;
-  d.time.integrator = IntegratorType::Leapfrog;
   d.time.t_end = 4.0;
   d.time.dt_out = 0.2;
   s.allow(Slot::Eos, {"polytropic"});
-  s.allow(Slot::Walls, {"none"});
-  s.allow(Slot::Gravity, {"tree", "direct"});
   s.build = [](const Params& prm, const SceneValues& v) {
-    if (!(prm.gas.gamma > 4.0 / 3.0))
-      throw ConfigError("gas.gamma = " + std::to_string(prm.gas.gamma) + ": a polytrope needs gamma > 4/3 (n < 3)");
-    const LaneEmden le(1.0 / (prm.gas.gamma - 1.0));
-    const PolytropeScales sc = polytrope_scales(le, 1.0, prm.gas.K, prm.gravity.G);
+    const LaneEmden le = star_profile(prm);
+    const PolytropeScales sc = star_scales(le, prm);
     const auto n = static_cast<std::size_t>(v.at("n"));
     Particles p = make_particles(prm, 3, n);
     Random rng(static_cast<std::uint64_t>(v.at("seed")));
@@ -65,7 +51,7 @@ SceneSpec polytrope_scene() {
       const double rho = std::max(sc.rho_c * std::pow(le.theta(r / sc.alpha), le.n()), 0.05 * sc.rho_c);
       p[Field::H][i] = eta * std::cbrt(m / rho);
     }
-    SceneSetup out{std::move(p), {}, std::cbrt(4.0 * std::numbers::pi / 3.0 / static_cast<double>(n)) * sc.R, 0.0};
+    SceneSetup out{std::move(p), {}, sphere_spacing(n, sc.R), 0.0};
     for (int k = 0; k < 3; ++k) { out.domain.lo[k] = -1.5 * sc.R; out.domain.hi[k] = 1.5 * sc.R; }
     return out;
   };

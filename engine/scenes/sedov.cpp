@@ -17,9 +17,10 @@
 #include <memory>
 
 #include "close_packed.h"
-#include "families.h"
 #include "reference/sedov_reference.h"
+#include "scene_registration.h"
 #include "scene_util.h"
+#include "shared_setups.h"
 #include "sph/kernel.h"
 
 namespace sph::scenes {
@@ -34,7 +35,6 @@ SceneSetup build_blast(int dim, const Params& prm, const SceneValues& v) {
   const Vec3 lo{-half, dim > 1 ? -half : 0.0, dim > 2 ? -half : 0.0}, hi{half, dim > 1 ? half : 1.0, dim > 2 ? half : 1.0};
   const Lattice lat = close_packed(dim, lo, hi, 2.0 * half / v.at("n_side"));
   const std::size_t n = lat.x.size();
-  Particles p = make_particles(prm, dim, n);
   const double volume = std::pow(2.0 * half, dim), m = rho1 * volume / static_cast<double>(n);
   const double h0 = effective_eta(prm, dim) * lat.spacing;
   const Kernel kernel(prm.kernel.type, dim);
@@ -42,21 +42,10 @@ SceneSetup build_blast(int dim, const Params& prm, const SceneValues& v) {
   double wsum = 0.0;
   for (const Vec3& x : lat.x) wsum += m * kernel.W(x.norm(), hb);
   const double u0 = ambient_u(prm, v);
-  for (std::size_t i = 0; i < n; ++i) {
-    p.x[0][i] = lat.x[i].x;
-    p.x[1][i] = lat.x[i].y;
-    p.x[2][i] = lat.x[i].z;
-    p[Field::Mass][i] = m;
-    p[Field::H][i] = h0;
-    if (p.has(Field::Energy)) p[Field::Energy][i] = u0 + v.at("E") * kernel.W(lat.x[i].norm(), hb) / wsum;
-  }
-  SceneSetup out{std::move(p), {}, lat.spacing, 0.0};
-  for (int k = 0; k < 3; ++k) {
-    out.domain.lo[k] = k < dim ? -half : 0.0;
-    out.domain.hi[k] = k < dim ? half : 1.0;
-    out.domain.bc[k] = k < dim ? Boundary::Periodic : Boundary::Open;
-  }
-  return out;
+  Particles p = gas_particles(prm, dim, lat.x, m, h0, u0);
+  if (p.has(Field::Energy))
+    for (std::size_t i = 0; i < n; ++i) p[Field::Energy][i] = u0 + v.at("E") * kernel.W(lat.x[i].norm(), hb) / wsum;
+  return SceneSetup{std::move(p), periodic_box(dim, lo, hi), lat.spacing, 0.0};
 }
 
 SceneSpec blast_scene(int dim, const char* name, const char* description, double half, double n_side) {
@@ -94,7 +83,7 @@ SceneSpec blast_scene(int dim, const char* name, const char* description, double
 
 }  // namespace
 
-SceneSpec sedov_scene() {
+SPH_SCENE(220, sedov_scene) {
   return blast_scene(2, "sedov",
                      "Sedov-Taylor blast, 2D: E = 1 at the centre of rho = 1, p0 = 1e-5, gamma 5/3, hexagonal lattice "
                      "160 across [-0.5,0.5]^2 periodic, t = 0.1; pass: shock radius within 2% of xi0 (E t^2/rho)^(1/4), "
@@ -102,7 +91,7 @@ SceneSpec sedov_scene() {
                      0.5, 160);
 }
 
-SceneSpec sedov3d_scene() {
+SPH_SCENE(230, sedov3d_scene) {
   return blast_scene(3, "sedov3d",
                      "Sedov-Taylor blast, 3D: E = 1 at the centre of rho = 1, p0 = 1e-5, gamma 5/3, BCC lattice 32 "
                      "across [-0.6,0.6]^3 periodic, t = 0.1; shock radius against xi0 (E t^2/rho)^(1/5), |dE/E|",

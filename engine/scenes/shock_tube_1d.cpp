@@ -4,9 +4,10 @@
 #include <memory>
 #include <vector>
 
-#include "families.h"
 #include "reference/riemann_reference.h"
+#include "scene_registration.h"
 #include "scene_util.h"
+#include "shared_setups.h"
 #include "sph/riemann.h"
 
 namespace sph::scenes {
@@ -45,13 +46,8 @@ double mass_below(double x, const TubeSetup& t) {
 }
 
 TubeSetup tube_from(const SceneValues& v) {
-  TubeSetup t{v.at("x_lo"),
-              v.at("x_hi"),
-              v.at("x0"),
-              {v.at("rho_l"), v.at("v_l"), v.at("p_l")},
-              {v.at("rho_r"), v.at("v_r"), v.at("p_r")},
-              static_cast<std::size_t>(v.at("n_left")),
-              0,
+  const auto [left, right] = tube_states(v);
+  TubeSetup t{v.at("x_lo"), v.at("x_hi"), v.at("x0"), left, right, static_cast<std::size_t>(v.at("n_left")), 0,
               v.at("smooth")};
   // equal masses: n_right / n_left = (rho_r L_r) / (rho_l L_l), rounded; the right spacing is then
   // m / rho_r exactly and the right wall moves by less than half a spacing (the density stays exact)
@@ -95,29 +91,24 @@ SceneSetup build_tube(const SceneSpec& spec, const Params& prm, const SceneValue
   return s;
 }
 
-std::vector<SceneParam> tube_params(double x_lo, double x_hi, double rl, double pl, double rr, double pr, double nl) {
-  return {
+std::vector<SceneParam> tube_params(double x_lo, double x_hi, double x0, const GasState& l, const GasState& r, double nl) {
+  std::vector<SceneParam> p = {
       {"n_left", nl, 4, 1e6, true, "particles left of the diaphragm (the right side gets equal masses)", "count"},
       {"x_lo", x_lo, -1e3, 1e3, false, "left wall [length]", "length"},
       {"x_hi", x_hi, -1e3, 1e3, false, "right wall [length]", "length"},
-      {"x0", 0.0, -1e3, 1e3, false, "diaphragm position [length]", "length"},
-      {"rho_l", rl, 1e-6, 1e6, false, "left density", "mass/length"},
-      {"v_l", 0.0, -1e3, 1e3, false, "left velocity", "length/time"},
-      {"p_l", pl, 1e-9, 1e9, false, "left pressure", "pressure"},
-      {"rho_r", rr, 1e-6, 1e6, false, "right density", "mass/length"},
-      {"v_r", 0.0, -1e3, 1e3, false, "right velocity", "length/time"},
-      {"smooth", 0.0, 0.0, 1e3, false,
-       "width w of a smoothed diaphragm: rho, v, P follow (1 + tanh((x - x0)/w)) / 2 between the two states "
-       "(0: sharp); the reference stays the sharp problem's, which the run approaches once the waves are many "
-       "w wide",
-       "length"},
-      {"p_r", pr, 1e-9, 1e9, false, "right pressure", "pressure"},
-  };
+      {"x0", x0, -1e3, 1e3, false, "diaphragm position [length]", "length"}};
+  for (SceneParam& q : tube_state_params(l, r, "mass/length")) p.push_back(std::move(q));
+  p.push_back({"smooth", 0.0, 0.0, 1e3, false,
+               "width w of a smoothed diaphragm: rho, v, P follow (1 + tanh((x - x0)/w)) / 2 between the two states "
+               "(0: sharp); the reference stays the sharp problem's, which the run approaches once the waves are many "
+               "w wide",
+               "length"});
+  return p;
 }
 
 }  // namespace
 
-SceneSpec sod_scene() {
+SPH_SCENE(10, sod_scene) {
   SceneSpec s;
   s.name = "sod";
   s.category = "gas dynamics / shock tubes";
@@ -132,7 +123,7 @@ SceneSpec sod_scene() {
   s.allow(Slot::Walls, {"none"});
   // measured at the defaults: leapfrog 7e-6 (Toro 2: 9e-5); forward Euler 4.6e-3, cfl = 0.7 1.2e-2
   s.energy_bound = 1e-3;
-  s.params = tube_params(-0.5, 0.5, 1.0, 1.0, 0.125, 0.1, 400);
+  s.params = tube_params(-0.5, 0.5, 0.0, {1.0, 0.0, 1.0}, {0.125, 0.0, 0.1}, 400);
   s.convergence = {"scene.n_left", {100, 200, 400, 800, 1600}, -1.0, ""};  // as tests/bench/sod_bench
   s.build = [s](const Params& p, const SceneValues& v) { return build_tube(s, p, v); };
   s.initial_pressure = [](const Vec3& r, const SceneValues& v) { return state_at(r.x, tube_from(v)).p; };
@@ -147,11 +138,11 @@ SceneSpec sod_scene() {
   return s;
 }
 
-SceneSpec castellanos_scene() {
+SPH_SCENE(20, castellanos_scene) {
   SceneSpec s = sod_scene();
   s.name = "shocktube_castellanos";
   s.description = "seed 003 tube: x in [-0.6,0.6], 1280 | 320 equal-mass particles, rho,p = 1,1 | 0.25,0.1795";
-  s.params = tube_params(-0.6, 0.6, 1.0, 1.0, 0.25, 0.1795, 1280);
+  s.params = tube_params(-0.6, 0.6, 0.0, {1.0, 0.0, 1.0}, {0.25, 0.0, 0.1795}, 1280);
   s.defaults.time.integrator = IntegratorType::RK4;  // seed 003 integrates with RK4
   s.defaults.physics.conduction = Toggle::Off;       // seed 003 eqs. 3.58-3.61: viscosity only
   s.build = [s](const Params& p, const SceneValues& v) { return build_tube(s, p, v); };
@@ -166,12 +157,7 @@ SceneSpec riemann_variant(const char* name, const char* description, double x_lo
   SceneSpec s = sod_scene();
   s.name = name;
   s.description = description;
-  s.params = tube_params(x_lo, x_hi, l.rho, l.p, r.rho, r.p, n_left);
-  for (SceneParam& q : s.params) {
-    if (q.name == "x0") q.value = x0;
-    if (q.name == "v_l") q.value = l.v;
-    if (q.name == "v_r") q.value = r.v;
-  }
+  s.params = tube_params(x_lo, x_hi, x0, l, r, n_left);
   s.defaults.time.t_end = t_end;
   s.defaults.time.dt_out = t_end / 4.0;
   s.convergence.values = {100, 200, 400, 800};  // the strong waves cost many steps: 1600 takes 100 s with RK4
@@ -187,7 +173,7 @@ SceneSpec riemann_variant(const char* name, const char* description, double x_lo
 // t = 0. Each tube is long enough that no wall's wave (nor the fan) reaches the other waves before
 // t_end, so the reference applies to the end (RiemannReference::valid_until; Toro's [0, 1] is widened
 // for tests 1, 2 and 5 and Lax, with the particle spacing kept).
-std::vector<SceneSpec> riemann_variant_scenes() {
+SPH_SCENES(30, riemann_variant_scenes) {
   return {
       riemann_variant("lax", "Lax's tube, rho,v,p = 0.445,0.698,3.528 | 0.5,0,0.571, t = 0.14", -1.5, 0.5, 0.0,
                       {0.445, 0.698, 3.528}, {0.5, 0.0, 0.571}, 600, 0.14),

@@ -9,9 +9,10 @@
 // the reference until a wave reaches a wall.
 #include <cmath>
 
-#include "families.h"
 #include "reference/riemann_reference.h"
+#include "scene_registration.h"
 #include "scene_util.h"
+#include "shared_setups.h"
 #include "sph/riemann.h"
 
 namespace sph::scenes {
@@ -37,7 +38,7 @@ RightLattice right_lattice(const SceneValues& v) {
 
 }  // namespace
 
-SceneSpec tube2d_scene() {
+SPH_SCENE(70, tube2d_scene) {
   SceneSpec s;
   s.name = "tube2d";
   s.category = "gas dynamics / shock tubes";
@@ -49,13 +50,9 @@ SceneSpec tube2d_scene() {
   s.allow(Slot::Eos, {"ideal_gas", "isothermal"});
   s.allow(Slot::Walls, {"none"});
   s.energy_bound = 1e-3;  // measured to t = 20: 1.6e-5 (leapfrog)
-  s.params = {{"n_side", 16, 2, 2000, true, "lattice particles per unit length on the dense side (seed: 16)", "particles per length"},
-              {"rho_l", 1.0, 1e-6, 1e6, false, "left (dense) density", "mass/area"},
-              {"v_l", 0.0, -1e3, 1e3, false, "left velocity along x", "length/time"},
-              {"p_l", 0.02, 1e-9, 1e9, false, "left pressure (seed: u = 0.05 at gamma 1.4)", "pressure"},
-              {"rho_r", 0.25, 1e-6, 1e6, false, "right density (seed: 4:1 compressed on the left)", "mass/area"},
-              {"v_r", 0.0, -1e3, 1e3, false, "right velocity along x", "length/time"},
-              {"p_r", 0.005, 1e-9, 1e9, false, "right pressure", "pressure"}};
+  s.params = {{"n_side", 16, 2, 2000, true, "lattice particles per unit length on the dense side (seed: 16)", "particles per length"}};
+  // the seed's gas: 4:1 compressed on the left, u = 0.05 at gamma 1.4 on both sides
+  for (SceneParam& q : tube_state_params({1.0, 0.0, 0.02}, {0.25, 0.0, 0.005}, "mass/area")) s.params.push_back(std::move(q));
   s.build = [s](const Params& prm, const SceneValues& v) {
     const auto n = static_cast<std::size_t>(v.at("n_side"));  // dense block: n x n in [0,1]^2
     const RightLattice r = right_lattice(v);
@@ -88,8 +85,8 @@ SceneSpec tube2d_scene() {
   s.initial_pressure = [](const Vec3& x, const SceneValues& v) { return x.x < 1.0 ? v.at("p_l") : v.at("p_r"); };
   s.reference = [](const Params& p, const SceneValues& v) -> std::unique_ptr<Reference> {
     if (p.physics.eos != EosType::IdealGas) return nullptr;  // the Riemann solution is an ideal gas's
-    return make_riemann_reference({v.at("rho_l"), v.at("v_l"), v.at("p_l")}, {v.at("rho_r"), v.at("v_r"), v.at("p_r")},
-                                  p.gas.gamma, 1.0, 0.0, right_lattice(v).x_hi);
+    const auto [left, right] = tube_states(v);
+    return make_riemann_reference(left, right, p.gas.gamma, 1.0, 0.0, right_lattice(v).x_hi);
   };
   return s;
 }

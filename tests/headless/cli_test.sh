@@ -56,6 +56,18 @@ ok "sod has its viscosity" grep -q '"visc.alpha"' "$work/sod/scene.json"
 
 # every shipped scene file is valid
 for f in "$root"/assets/scenes/*.json; do "$sph" check "$f" > /dev/null; check "check $f" 0 $?; done
+# the shipped scene files are generated: scene-json prints one, write-assets writes all (scenes/scene_assets_test
+# checks they equal the compiled defaults)
+"$sph" scene-json sod > "$work/sod_asset.json"; check "scene-json sod" 0 $?
+ok "scene-json is the shipped file" cmp -s "$work/sod_asset.json" "$root/assets/scenes/sod.json"
+"$sph" scene-json no_such_scene > "$work/none.json" 2> "$work/none.err"; check "scene-json of an unknown name" 3 $?
+ok "scene-json names the unknown scene" grep -q "unknown scene 'no_such_scene'" "$work/none.err"
+ok "scene-json prints nothing for it" test ! -s "$work/none.json"
+mkdir -p "$work/assets"
+"$sph" write-assets "$work/assets" > /dev/null; check "write-assets" 0 $?
+ok "write-assets writes a file per scene" test "$(ls "$work/assets" | wc -l)" = "$("$sph" list | wc -l)"
+ok "write-assets writes what scene-json prints" cmp -s "$work/assets/sod.json" "$work/sod_asset.json"
+"$sph" write-assets "$work/no_such_folder" 2> /dev/null; check "write-assets into a missing folder" 4 $?
 
 # bad input: exit 3 (invalid scene) or 2 (usage), a message naming the key, nothing written
 bad() {  # bad NAME EXPECTED_RC WORD_IN_MESSAGE ARGS...

@@ -11,46 +11,22 @@
 #include <cmath>
 #include <cstdio>
 
-#include "close_packed.h"
 #include "sph/world.h"
 
 namespace sph {
 namespace {
 
-/// The same density on an exact hexagonal lattice: n_side per row, an even number of rows of
-/// spacing dx sqrt(3)/2 in a periodic box [0, 1] x [0, rows dy].
-SceneSetup hexagonal_box(const Params& prm, const SceneValues& v) {
-  const auto n = static_cast<std::size_t>(v.at("n_side"));
-  const double dx = 1.0 / n, dy = dx * std::sqrt(3.0) / 2.0;
-  const std::size_t rows = 2 * static_cast<std::size_t>(std::llround(0.5 / dy));
-  const scenes::Lattice l = scenes::close_packed(2, {0, 0, 0}, {1.0, rows * dy, 1}, std::sqrt(dx * dy));
-  Particles p(2, l.x.size(), FieldSet{}.add(Field::Mass).add(Field::H).add(Field::Energy).add(Field::Density));
-  const double eta = prm.kernel.eta > 0 ? prm.kernel.eta : Kernel(prm.kernel.type, 2).default_eta();
-  for (std::size_t k = 0; k < l.x.size(); ++k) {
-    p.x[0][k] = l.x[k].x;
-    p.x[1][k] = l.x[k].y;
-    p[Field::Mass][k] = 0.1 * dx * dy * n * n;  // rho = 0.1 n^2, as the square lattice
-    p[Field::H][k] = eta * l.spacing;
-    p[Field::Energy][k] = v.at("u0");
-  }
-  SceneSetup s{std::move(p), {}, l.spacing, 0.0};
-  s.domain.lo = {0, 0, 0};
-  s.domain.hi = {1, rows * dy, 1};
-  s.domain.bc = {Boundary::Periodic, Boundary::Periodic, Boundary::Open};
-  return s;
-}
-
-/// box_lattice (seed 000 §4.1.2, n x n, rho = 10, u = 0.05, gamma = 1.4) as the barotropic gas of the
-/// same adiabat, with kernel k at its default eta.
+/// box_lattice (seed 000 §4.1.2, n x n, rho = 10, u = 0.05, gamma = 1.4; or its hexagonal lattice of the same
+/// density, scene.lattice = 1) as the barotropic gas of the same adiabat, with kernel k at its default eta.
 struct Barotropic {
   Barotropic(const std::string& kernel, int n_side, bool hexagonal) {
     spec = *find_scene("box_lattice");
     spec.allow(Slot::Eos, {"polytropic"});
-    if (hexagonal) spec.build = hexagonal_box;
     cfg = RunConfig::from_scene("box_lattice");
     cfg.scene = &spec;
     cfg.set("kernel.type", kernel, "test");
     cfg.set("scene.n_side", std::to_string(n_side), "test");
+    cfg.set("scene.lattice", hexagonal ? "1" : "0", "test");  // the scene's own hexagonal lattice: same density
     cfg.params.physics.eos = EosType::Polytropic;
     cfg.params.physics.energy = Toggle::Off;
     const double rho0 = 0.1 * n_side * n_side, P0 = (cfg.params.gas.gamma - 1.0) * rho0 * 0.05;

@@ -1,6 +1,6 @@
 // A scene is a description: name, dimension, the physics stages it runs (in its default parameters),
 // its own parameters (particle counts, states), a function that places the particles, and optionally
-// an exact or reference solution. Built-in scenes live in an explicit table (scenes/registry.cpp).
+// an exact or reference solution. Built-in scenes: files of engine/scenes/ with SPH_SCENE markers (table generated).
 #pragma once
 #include <array>
 #include <functional>

@@ -1,0 +1,45 @@
+// Set-ups several scenes share, so that a scene file states only what is its own: gas particles at
+// given positions in a periodic box (the gas test boxes), the polytropic star of seed 003 §3.4.3 (its
+// physics, its Lane-Emden solution and scales) and the two gas states of a shock tube (left | right).
+#pragma once
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "reference/lane_emden.h"
+#include "sph/riemann.h"
+#include "sph/scene.h"
+
+namespace sph::scenes {
+
+/// Gas at rest at positions x (their first dim coordinates are used), every particle of mass m [mass]
+/// and smoothing length h [length], with specific internal energy u [energy/mass] where the stages
+/// keep one. Callers change single particles' fields afterwards (velocities, masses, energies).
+Particles gas_particles(const Params& prm, int dim, const std::vector<Vec3>& x, double m, double h, double u);
+
+/// The box [lo, hi], periodic on its first dim axes and open on the others.
+Domain periodic_box(int dim, const Vec3& lo, const Vec3& hi);
+
+/// Mean spacing [length] of n particles filling a sphere of radius R [length]: (4 pi / 3 n)^(1/3) R.
+double sphere_spacing(std::size_t n, double R);
+
+/// The polytropic star scenes' common start (seed 003 §3.4.3; G = M = 1): dimension 3, gamma = 2
+/// (n = 1) and K = 2/pi (R = 1), Barnes-Hut gravity with kernel softening (tree or direct accepted),
+/// Monaghan viscosity alpha = 1, beta = 2, leapfrog, no walls. The caller adds the EOS and the rest.
+SceneSpec polytrope_base(std::string name, std::string description);
+
+/// The Lane-Emden solution of the star of prm.gas.gamma (index n = 1/(gamma - 1)); throws
+/// ConfigError unless gamma > 4/3 (n < 3: a star of finite radius that gravity can hold).
+LaneEmden star_profile(const Params& prm);
+
+/// alpha, rho_c and R of the star of mass 1 with prm's gas.K and gravity.G.
+PolytropeScales star_scales(const LaneEmden& le, const Params& prm);
+
+/// A tube's two states as the keys rho_l, v_l, p_l, rho_r, v_r, p_r (density in `density_unit`,
+/// velocities along x).
+std::vector<SceneParam> tube_state_params(const GasState& left, const GasState& right, const std::string& density_unit);
+
+/// The left and right states those keys hold.
+std::pair<GasState, GasState> tube_states(const SceneValues& v);
+
+}  // namespace sph::scenes
