@@ -27,14 +27,14 @@ TEST(ViscositySwitch, BalsaraFactorIsOneInCompressionAndZeroInRotation) {
 
 TEST(ViscositySwitch, CullenDehnenAlphaRisesAtOnceInACompressionThatSteepens) {
   const CullenDehnenLaw law{0.0, 1.0, 0.1};
-  // div v from -0.9 to -1 over dt = 0.01: d(div v)/dt = -10; xi = 1 (no curl); h = 0.1, c = 1:
-  // h^2 A = 0.1, alpha_loc = 0.1 / 1.1
+  // div v from -0.9 to -1 over dt = 0.01: d(div v)/dt = -10; xi = 1 (no curl); H = 0.1, c = 1:
+  // H^2 A = 0.1, alpha_loc = 0.1 / 1.1
   EXPECT_NEAR(law.local(-1.0, -0.9, 0.0, 0.01, 1.0, 0.1), 0.1 / 1.1, 1e-14);
   EXPECT_NEAR(law.next(0.0, -1.0, -0.9, 0.0, 0.01, 1.0, 0.1), 0.1 / 1.1, 1e-14);
   // a curl as large as the divergence halves A: xi = 1/2
   EXPECT_NEAR(law.local(-1.0, -0.9, 1.0, 0.01, 1.0, 0.1), 0.05 / 1.05, 1e-14);
   // a strong steepening drives alpha to alpha_max, never beyond
-  EXPECT_NEAR(law.next(0.0, -1.0, 0.0, 0.0, 1e-6, 1.0, 0.1), 1e4 / (1e4 + 1.0), 1e-12);  // h^2 A = 1e4
+  EXPECT_NEAR(law.next(0.0, -1.0, 0.0, 0.0, 1e-6, 1.0, 0.1), 1e4 / (1e4 + 1.0), 1e-12);  // H^2 A = 1e4
   EXPECT_LE(law.next(0.0, -1.0, 0.0, 0.0, 1e-9, 1.0, 0.1), 1.0);
   // no trigger in an expansion, or in a compression that relaxes
   EXPECT_EQ(law.local(1.0, 2.0, 0.0, 0.01, 1.0, 0.1), 0.0);
@@ -43,7 +43,7 @@ TEST(ViscositySwitch, CullenDehnenAlphaRisesAtOnceInACompressionThatSteepens) {
 
 TEST(ViscositySwitch, CullenDehnenAlphaDecaysExponentiallyToItsFloor) {
   const CullenDehnenLaw law{0.0, 1.0, 0.1};
-  // tau = h / (decay c) = 0.1 / (0.1 * 1) = 1: alpha = e^(-dt) after dt without a trigger
+  // tau = H / (decay c) = 0.1 / (0.1 * 1) = 1: alpha = e^(-dt) after dt without a trigger
   EXPECT_NEAR(law.next(1.0, 0.5, 0.5, 0.0, 0.5, 1.0, 0.1), std::exp(-0.5), 1e-15);
   // integrated exactly: two half intervals give one whole interval
   const double half = law.next(law.next(1.0, 0.5, 0.5, 0.0, 0.25, 1.0, 0.1), 0.5, 0.5, 0.0, 0.25, 1.0, 0.1);

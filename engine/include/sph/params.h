@@ -77,7 +77,7 @@ struct ViscParams {
   // The switch (physics.visc_switch = cullen_dehnen): alpha per particle in [alpha_min, alpha_max]
   double alpha_min = 0.2;  ///< floor of alpha far from shocks (Sod: 0.1 gives L1(rho) 1.15x, 0.2 1.05x the constant alpha = 1) [dimensionless]
   double alpha_max = 1.0;  ///< alpha at a shock; Pi uses beta alpha_ab / alpha_max for its quadratic term [dimensionless]
-  double decay = 0.1;      ///< alpha decays on tau = h / (decay c) behind a shock [dimensionless]
+  double decay = 0.1;      ///< alpha decays on tau = H / (decay c) behind a shock, H the kernel's support radius [dimensionless]
   bool operator==(const ViscParams&) const = default;
 };
 

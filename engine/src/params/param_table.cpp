@@ -251,8 +251,8 @@ std::vector<ParamInfo> build() {
                     kCullenDehnen, true},
                    [](Params& p) -> double& { return p.visc.alpha_max; }, 1e-3, 10.0));
   t.push_back(real({"visc.decay", "dimensionless",
-                    "Cullen-Dehnen switch: alpha decays on tau = h / (decay c) behind a shock (Cullen & Dehnen 2010: "
-                    "0.05-0.2)", "", kCullenDehnen, true},
+                    "Cullen-Dehnen switch: alpha decays on tau = H / (decay c) behind a shock, H the kernel's support "
+                    "radius (Cullen & Dehnen 2010: 0.05-0.2)", "", kCullenDehnen, true},
                    [](Params& p) -> double& { return p.visc.decay; }, 1e-3, 10.0));
   t.push_back(real({"visc.eps", "dimensionless", "eta^2 = eps h^2 regularises 1/r^2 (seed 001 eq. 42: 0.01)",
                     "visc_eps", kAnyViscosity, true},

@@ -86,7 +86,7 @@ class ViscositySwitch final : public Stage {
         if (switch_ == ViscSwitch::Balsara) {
           alpha[i] = ref * terms::balsara_factor(dv, cv, cs[i], hi);
         } else {
-          alpha[i] = first ? prm.visc.alpha_min : law.next(alpha[i], dv, divv[i], cv, dt, cs[i], hi);
+          alpha[i] = first ? prm.visc.alpha_min : law.next(alpha[i], dv, divv[i], cv, dt, cs[i], support * hi);
         }
         divv[i] = dv;
         curl[i] = cv;
