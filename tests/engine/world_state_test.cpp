@@ -19,6 +19,7 @@ struct Case {
   std::string scene;
   std::vector<std::pair<std::string, std::string>> sets;
   int steps;  ///< steps before and after the save (past a reordering at 16, list rebuilds)
+  std::string tag = "";  ///< added to the scene in the test's name
 };
 
 void PrintTo(const Case& c, std::ostream* os) { *os << c.scene; }
@@ -56,13 +57,16 @@ const Case kCases[] = {
     {"evrard", {{"scene.n", "200"}}, 10},
     {"kepler", {}, 20},
     {"burgers_upwind", {{"scene.n", "100"}}, 20},
+    // alpha per particle and the switch's started flag (a stage's saved state)
+    {"sod", {{"scene.n_left", "60"}, {"visc.switch", "cullen_dehnen"}}, 20, "_switch"},
 };
 
 INSTANTIATE_TEST_SUITE_P(ScenesAndIntegrators, WorldState,
                          ::testing::Combine(::testing::ValuesIn(kCases),
                                             ::testing::Values("euler", "leapfrog", "predictor_corrector", "rk4")),
                          [](const auto& info) {
-                           return std::get<0>(info.param).scene + "_" + std::get<1>(info.param);
+                           return std::get<0>(info.param).scene + std::get<0>(info.param).tag + "_" +
+                                  std::get<1>(info.param);
                          });
 
 TEST(WorldStateRefusal, AStateOfAnotherSceneIsRefused) {

@@ -11,7 +11,8 @@
 # usage: compare_binaries.sh OLD_SPH NEW_SPH OUTDIR [SCENE...]
 #   Each run stops at T = t_end / 20 (from the scene's own scene.json) with a particle file at T/2 and T,
 #   on one thread; SCENE_ARGS below shrinks the heavy scenes (a run takes ~10 s at most). Extra flags
-#   for every run: COMPARE_SET="key=value ..." (e.g. COMPARE_SET="kernel.type=M6").
+#   for every run: COMPARE_SET="key=value ..." (e.g. COMPARE_SET="kernel.type=M6"). COMPARE_FULL=1 runs every
+#   scene at its defaults to its t_end instead (about 10 minutes a binary on one core).
 set -u
 if [ $# -lt 3 ]; then
   sed -n '2,16p' "$0" >&2
@@ -68,6 +69,7 @@ for scene in $scenes; do
   half=$(awk -v t="$T" 'BEGIN { printf "%.6g", t / 2 }')
   # shellcheck disable=SC2046,SC2086
   args=(run "$scene" --until "$T" --set "time.dt_out=$half" --threads 1 --quiet $(scene_args "$scene"))
+  [ -n "${COMPARE_FULL:-}" ] && args=(run "$scene" --threads 1 --quiet)
   for kv in ${COMPARE_SET:-}; do args+=(--set "$kv"); done
   rm -rf "$out/old/$scene" "$out/new/$scene"
   "$old" "${args[@]}" --out "$out/old/$scene" > "$out/old_$scene.log" 2>&1; rc_old=$?
