@@ -135,10 +135,9 @@ std::string swift_file(const World& world, const std::string& ic_file, std::vect
   return s;
 }
 
-std::string gadget4_file(const World& world, const std::string& ic_file, std::vector<std::string>* w) {
-  const Target t(world, IcFormat::Gadget4, w);
+/// GADGET-4's Config.sh options for the target, one a line (a warning when a periodic box is not a cube).
+std::string gadget4_config(const Target& t, std::vector<std::string>* w) {
   const Params& prm = t.prm;
-  const UnitSystem& u = t.u;
   const int dim = t.dim;
   const bool nbody = t.nbody;
   const KernelMapping& km = t.km;
@@ -159,6 +158,16 @@ std::string gadget4_file(const World& world, const std::string& ic_file, std::ve
     else config += "GAMMA=" + num(prm.gas.gamma) + "\n";
   }
   config += "DOUBLEPRECISION=1\nIDS_64BIT\n";
+  return config;
+}
+
+std::string gadget4_file(const World& world, const std::string& ic_file, std::vector<std::string>* w) {
+  const Target t(world, IcFormat::Gadget4, w);
+  const Params& prm = t.prm;
+  const UnitSystem& u = t.u;
+  const int dim = t.dim;
+  const ExportBox& box = t.box;
+  const std::string config = gadget4_config(t, w);
   std::string s = "% GADGET-4 parameter file for " + ic_file + ", written by `sph export-ics " + world.config().scene->name +
                   " --format gadget4`.\n% Compile GADGET-4 with these Config.sh options:\n";
   for (std::size_t a = 0, b; a < config.size(); a = b + 1) {
