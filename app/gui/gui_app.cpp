@@ -120,7 +120,7 @@ void push_drag_hook(const GuiOptions& o, long long frame, const ParticleView& vi
 }
 
 /// What the view showed last, for scripted checks: its legend rows and the inspected particle's numbers
-/// (17 digits: a test recomputes them with World::inspect).
+/// (17 digits: a test recomputes them with Report::inspect).
 void report_view(const ParticleView& view, const StepperFrame& f) {
   std::string rows;
   for (const std::string& r : view.layout().legend_rows) rows += (rows.empty() ? "" : " | ") + r;

@@ -1,5 +1,5 @@
 // The particle inspector: the particle picked in the view (or typed by id) taken apart by
-// World::inspect on the engine thread - its fields, the terms of its momentum and energy equations
+// Report::inspect on the engine thread - its fields, the terms of its momentum and energy equations
 // for the scene's formulation with their sums against the rates the engine computes, what heats it,
 // and its neighbours with their kernel weights (ringed in the view).
 #include <imgui.h>

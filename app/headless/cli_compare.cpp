@@ -34,9 +34,9 @@ std::optional<CompareSetup> resolve_compare(const CompareOptions& opt, const Run
 
 std::vector<std::pair<std::string, double>> reference_errors(const World& w) {
   std::vector<std::pair<std::string, double>> out;
-  const std::vector<double> v = w.reference_values();
-  for (std::size_t k = 0; k < w.reference_columns().size() && k < v.size(); ++k)
-    out.emplace_back(w.reference_columns()[k].name, v[k]);
+  const std::vector<double> v = w.report().reference_values();
+  for (std::size_t k = 0; k < w.report().reference_columns().size() && k < v.size(); ++k)
+    out.emplace_back(w.report().reference_columns()[k].name, v[k]);
   return out;
 }
 

@@ -103,9 +103,9 @@ void advance_b(World& b, double t, const CompareSetup& setup) {
 
 /// The run's "warnings" section on stderr: what it tolerated (nothing is printed for a clean run).
 void print_warnings(const World& world) {
-  if (world.warnings().empty()) return;
-  std::fprintf(stderr, "warnings (%zu):\n", world.warnings().size());
-  for (const RunWarning& w : world.warnings())
+  if (world.checks().warnings().empty()) return;
+  std::fprintf(stderr, "warnings (%zu):\n", world.checks().warnings().size());
+  for (const RunWarning& w : world.checks().warnings())
     std::fprintf(stderr, "  [%s] from step %lld (t = %g, %lld checks): %s\n", w.kind.c_str(),
                  static_cast<long long>(w.step), w.t, static_cast<long long>(w.times), w.message.c_str());
 }
@@ -179,7 +179,7 @@ int run_command(const RunOptions& opt, const ResumePoint* resume) {
     RunOptions fopt = opt;  // with the colour-by field resolved
     try {
       if (!opt.frames.empty()) {  // refuse an unknown field before anything is written
-        const Snapshot snap = world.snapshot();
+        const Snapshot snap = world.report().snapshot();
         if (fopt.color_by.empty())  // the default: rho where the scene has it, else its first field
           fopt.color_by = snap.find("rho") || snap.fields.empty() ? "rho" : snap.fields.front().name;
         if (opt.tree_probe >= 0 && cfg.params.physics.gravity != GravityType::Tree)
@@ -237,15 +237,15 @@ int run_command(const RunOptions& opt, const ResumePoint* resume) {
     std::string err;
     Snapshot snap, snap_b;
     auto frame = [&] {  // the snapshot(s), with the probed particle's tree walk when asked for
-      snap = world.snapshot();
+      snap = world.report().snapshot();
       if (opt.tree_probe >= 0) {
-        snap.tree_cells = world.tree_cells(static_cast<std::size_t>(opt.tree_probe));
+        snap.tree_cells = world.report().tree_cells(static_cast<std::size_t>(opt.tree_probe));
         snap.tree_probe = opt.tree_probe;
       }
       render::FrameScene scene;
       scene.a = &snap;
       if (b_ptr) {
-        snap_b = b_ptr->snapshot();
+        snap_b = b_ptr->report().snapshot();
         scene.b = &snap_b;
         scene.label_a = compare->label_a;
         scene.label_b = compare->label_b;
@@ -295,10 +295,10 @@ int run_command(const RunOptions& opt, const ResumePoint* resume) {
                   cfg.scene->name.c_str(), world.time(), static_cast<long long>(world.steps()),
                   world.particles().size(), wall, psteps / wall, omp_get_max_threads(), world.last_team(),
                   thread_wait_policy().c_str());
-      if (world.has_reference()) {
-        const auto& cols = world.reference_columns();
-        const std::vector<double> vals = world.reference_values();
-        std::printf("reference at t = %g (%s):\n", world.time(), world.reference()->description().c_str());
+      if (world.report().has_reference()) {
+        const auto& cols = world.report().reference_columns();
+        const std::vector<double> vals = world.report().reference_values();
+        std::printf("reference at t = %g (%s):\n", world.time(), world.report().reference()->description().c_str());
         std::string line;
         for (std::size_t k = 0; k < cols.size(); ++k) {
           char item[96];

@@ -14,7 +14,7 @@ namespace sph::cli {
 namespace {
 
 std::string diagnostics_note(const World& world) {
-  return world.scene().name + ": conserved quantities per step (seed 000 eqs. 3.4.1-3.4.5)";
+  return world.config().scene->name + ": conserved quantities per step (seed 000 eqs. 3.4.1-3.4.5)";
 }
 
 }  // namespace
@@ -55,11 +55,11 @@ RunOutput::RunOutput(const std::string& dir, const World& world, const OutputOpt
   check(diag_.open(dir + "/diagnostics.csv"));
   if (options_.csv_comments) check(diag_.append("# " + diagnostics_note(world) + "\n"));
   check(diag_.append(diagnostics_csv_header() + "\n"));
-  if (world.has_reference()) {
+  if (world.report().has_reference()) {
     check(errors_.open(dir + "/errors.csv"));
-    if (options_.csv_comments) check(errors_.append("# " + world.reference()->description() + "\n"));
-    check(errors_.append(errors_csv_header(world.reference_columns()) + "\n"));
-    valid_until_ = world.reference()->valid_until();
+    if (options_.csv_comments) check(errors_.append("# " + world.report().reference()->description() + "\n"));
+    check(errors_.append(errors_csv_header(world.report().reference_columns()) + "\n"));
+    valid_until_ = world.report().reference()->valid_until();
   }
   columns_ = particle_columns(world);
 }
@@ -104,7 +104,7 @@ void RunOutput::finish() {
 }
 
 void RunOutput::write_diagnostics(const World& world) {
-  check(diag_.append(diagnostics_csv_row(world.diagnostics()) + "\n"));
+  check(diag_.append(diagnostics_csv_row(world.report().diagnostics()) + "\n"));
 }
 
 void RunOutput::write_particles(const World& world) {
@@ -142,9 +142,9 @@ void RunOutput::write_particles(const World& world) {
   ++files_;
   series_.push_back({world.time(), stem});
   steps_.push_back(world.steps());
-  if (world.has_reference()) {
+  if (world.report().has_reference()) {
     check(errors_.append(
-        errors_csv_row(world.time(), world.reference_values(), world.time() <= valid_until_ * (1.0 + 1e-12)) + "\n"));
+        errors_csv_row(world.time(), world.report().reference_values(), world.time() <= valid_until_ * (1.0 + 1e-12)) + "\n"));
     check(errors_.flush());
   }
   if (options_.vtu) {
@@ -160,10 +160,10 @@ void RunOutput::write_particles(const World& world) {
 
 void RunOutput::write_meta(const World& world) {
   nlohmann::ordered_json j;
-  j["scene"] = world.scene().name;
+  j["scene"] = world.config().scene->name;
   j["about"] = "what the comment lines of the CSV files said (sph run --csv-comments puts them back in the files)";
   j["diagnostics.csv"] = diagnostics_note(world);
-  if (world.has_reference()) j["errors.csv"] = world.reference()->description();
+  if (world.report().has_reference()) j["errors.csv"] = world.report().reference()->description();
   nlohmann::ordered_json files = nlohmann::ordered_json::array();
   for (std::size_t k = 0; k < series_.size(); ++k)
     files.push_back({{"file", series_[k].file + ".csv"}, {"t", series_[k].t}, {"step", steps_[k]}});
@@ -174,7 +174,7 @@ void RunOutput::write_meta(const World& world) {
 void RunOutput::write_warnings(const World& world) {
   std::ostringstream f;  // written whole at the end of the run (atomically)
   f << "kind,step,t,particle,checks,message\n";
-  for (const RunWarning& w : world.warnings()) {
+  for (const RunWarning& w : world.checks().warnings()) {
     std::string msg = w.message;  // one CSV field: quoted, inner quotes doubled
     for (std::size_t k = msg.find('"'); k != std::string::npos; k = msg.find('"', k + 2)) msg.insert(k, 1, '"');
     f << w.kind << "," << w.step << "," << w.t << "," << w.particle << "," << w.times << ",\"" << msg << "\"\n";

@@ -15,9 +15,9 @@ RunOutput::RunOutput(const std::string& dir, const World& world, const OutputOpt
   manifest_.restore(resume.manifest);
   put("scene.json", world.config().to_json());  // the end time may have changed (--until)
   check(diag_.resume(dir + "/diagnostics.csv", resume.diag));
-  if (world.has_reference()) {
+  if (world.report().has_reference()) {
     check(errors_.resume(dir + "/errors.csv", resume.errors));
-    valid_until_ = world.reference()->valid_until();
+    valid_until_ = world.report().reference()->valid_until();
   }
   columns_ = particle_columns(world);
 }

@@ -62,9 +62,9 @@ int main(int argc, char** argv) {
         try {
           sph::World w(cfg);
           w.advance_to(t_end);
-          e.L1_rho = w.reference_value("L1_rho");
-          e.L1_v = w.reference_value("L1_v");
-          e.L1_p = w.reference_value("L1_p");
+          e.L1_rho = w.report().reference_value("L1_rho");
+          e.L1_v = w.report().reference_value("L1_v");
+          e.L1_p = w.report().reference_value("L1_p");
           steps = w.steps();
           N = w.particles().size();
         } catch (const sph::DivergedError& err) {

@@ -74,19 +74,19 @@ int main(int argc, char** argv) {
     sph::World w(cfg);
     w.set_adaptive_threads(false);  // THREADS threads on every step, no team probe
     for (int s = 0; s < 2; ++s) w.step();
-    const std::vector<sph::StageTiming> before = w.timings();
-    const std::int64_t evals0 = w.evaluations(), builds0 = w.list_builds(), over0 = w.h_overflows();
+    const std::vector<sph::StageTiming> before = w.report().timings();
+    const std::int64_t evals0 = w.report().evaluations(), builds0 = w.neighbours().builds(), over0 = w.neighbours().h_overflows();
     const double cpu0 = cpu_seconds();
     const auto t0 = std::chrono::steady_clock::now();
     for (int s = 0; s < steps; ++s) w.step();
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const double cpu = cpu_seconds() - cpu0;
     const double n = static_cast<double>(w.particles().fluid());
-    const double pairs = static_cast<double>(w.neighbour_pairs());
-    const double evals = static_cast<double>(w.evaluations() - evals0);
-    const sph::DensityStats& ds = w.density_stats();
+    const double pairs = static_cast<double>(w.neighbours().pairs());
+    const double evals = static_cast<double>(w.report().evaluations() - evals0);
+    const sph::DensityStats& ds = w.report().density_stats();
     const double nb = ds.mean_neighbours, its = std::max(1.0, ds.mean_iterations);
-    const auto& after = w.timings();
+    const auto& after = w.report().timings();
     double rho_ns = 0.0, force_ns = 0.0;
     for (std::size_t k = 0; k < after.size() && k < before.size(); ++k) {
       const double sec = after[k].seconds - before[k].seconds;
@@ -96,8 +96,8 @@ int main(int argc, char** argv) {
     std::printf("%9.0f %10.1f %10.1f %8.1f %8.1f %8.0f %6.2f %9.2f %9.2f %7.2f %6.3f ", n, 1e9 * wall / (n * steps),
                 1e9 * cpu / (n * steps), pairs / n,
                 nb, (rss_bytes() - rss0) / n, ds.mean_iterations, rho_ns, force_ns,
-                static_cast<double>(w.list_builds() - builds0) / evals,
-                static_cast<double>(w.h_overflows() - over0) / evals);
+                static_cast<double>(w.neighbours().builds() - builds0) / evals,
+                static_cast<double>(w.neighbours().h_overflows() - over0) / evals);
     for (std::size_t k = 0; k < after.size() && k < before.size(); ++k) {
       const double sec = after[k].seconds - before[k].seconds;
       std::printf(" %s %.1f;", after[k].name.c_str(), 1e9 * sec / (pairs * evals));

@@ -79,7 +79,7 @@ TEST_P(RoundTrip, ExportedICStartsAndStepsLikeTheScene) {
       EXPECT_EQ(b.domain().lo[k], a.domain().lo[k]);
       EXPECT_EQ(b.domain().hi[k], a.domain().hi[k]);
     }
-    EXPECT_EQ(b.has_reference(), a.has_reference());
+    EXPECT_EQ(b.report().has_reference(), a.report().has_reference());
     EXPECT_LT(state_difference(a, b), 1e-12) << to_string(format) << ": the initial state";
     for (int s = 0; s < 5; ++s) {
       a.step();
@@ -88,11 +88,11 @@ TEST_P(RoundTrip, ExportedICStartsAndStepsLikeTheScene) {
     // the initial states' round-off (checked above to 1e-12) grows through the conduction's
     // sqrt(|P_a - P_b|) and the h solve's stopping test (tolerance 1e-6): 1.1e-7 on Sod after five steps
     EXPECT_LT(state_difference(a, b), 1e-6) << to_string(format) << ": five steps later";
-    if (a.has_reference()) {
-      const std::vector<double> ra = a.reference_values(), rb = b.reference_values();
+    if (a.report().has_reference()) {
+      const std::vector<double> ra = a.report().reference_values(), rb = b.report().reference_values();
       for (std::size_t k = 0; k < ra.size(); ++k)
         if (std::isfinite(ra[k])) {
-          EXPECT_LT(rel(ra[k], rb[k]), 1e-6) << a.reference_columns()[k].name;
+          EXPECT_LT(rel(ra[k], rb[k]), 1e-6) << a.report().reference_columns()[k].name;
         }
     }
     fs::remove(path);

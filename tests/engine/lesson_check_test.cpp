@@ -119,8 +119,8 @@ TEST(LessonCheck, TotalVariationBoundsTheVelocityPeak) {
   World w(cfg);
   while (w.time() < 0.05) w.step(0.05 - w.time());
   const double tv = measure(lesson_config(st, {}), "tv_vx", "end", 0.05);
-  EXPECT_GE(tv, 2.0 * w.diagnostics().v_max * (1 - 1e-12));
-  EXPECT_LT(tv, 4.0 * w.diagnostics().v_max);  // with viscosity: nearly monotone either side of the peak
+  EXPECT_GE(tv, 2.0 * w.report().diagnostics().v_max * (1 - 1e-12));
+  EXPECT_LT(tv, 4.0 * w.report().diagnostics().v_max);  // with viscosity: nearly monotone either side of the peak
 }
 
 TEST(LessonCheck, UnknownMetricIsALessonError) {

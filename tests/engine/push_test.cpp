@@ -151,7 +151,7 @@ TEST(Push, InspectorShowsThePushTerm) {
   for (std::size_t i = 0; i < p.fluid() && k == p.fluid(); ++i)  // a particle near the corner
     if (std::abs(std::abs(p.x[0][i]) - 0.5) < 0.05 && std::abs(std::abs(p.x[1][i]) - 0.5) < 0.05) k = i;
   ASSERT_LT(k, p.fluid());
-  const std::optional<Inspection> in = w.inspect(p.id[k]);
+  const std::optional<Inspection> in = w.report().inspect(p.id[k]);
   ASSERT_TRUE(in);
   const auto term = std::find_if(in->terms.begin(), in->terms.end(),
                                  [](const InspectTerm& t) { return t.name == "push (right drag)"; });

@@ -439,7 +439,7 @@ TEST(Stepper, CompareStepsBothRunsToTheSameTimes) {
   ASSERT_TRUE(wait_for(s, [](const StepperFrame& g) { return !g.comparing; }));
 }
 
-// The inspector's channel: frames carry World::inspect of the asked id for the state they show (and of
+// The inspector's channel: frames carry Report::inspect of the asked id for the state they show (and of
 // run B while comparing).
 TEST(Stepper, InspectionFollowsTheState) {
   Stepper s(small_sod(), options(false));
@@ -503,7 +503,7 @@ TEST(Stepper, PushesAreLoggedAndReplay) {
     r.apply_due(replay);
     replay.step();
   }
-  const Snapshot snap = replay.snapshot();
+  const Snapshot snap = replay.report().snapshot();
   ASSERT_EQ(snap.count, f.snapshot.count);
   double moved = 0.0;
   for (std::size_t i = 0; i < snap.count; ++i) {
@@ -512,7 +512,7 @@ TEST(Stepper, PushesAreLoggedAndReplay) {
   }
   World unpushed(cfg);
   for (int k = 0; k < 7; ++k) unpushed.step();
-  const Snapshot still = unpushed.snapshot();
+  const Snapshot still = unpushed.report().snapshot();
   for (std::size_t i = 0; i < snap.count; ++i) moved = std::max(moved, static_cast<double>(std::abs(snap.x[i] - still.x[i])));
   EXPECT_GT(moved, 1e-4);  // the push did move particles
 }

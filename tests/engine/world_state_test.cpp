@@ -111,14 +111,14 @@ TEST(WorldStateReference, AFitOverPastEvaluationsGoesOn) {
   cfg.set("scene.fit_t0", "0", "test");  // every evaluation is in the fit window
   cfg.validate();
   World whole(cfg), first(cfg);
-  for (int k = 0; k < 12; ++k) { whole.step(); whole.reference_values(); }
-  for (int k = 0; k < 6; ++k) { first.step(); first.reference_values(); }
+  for (int k = 0; k < 12; ++k) { whole.step(); whole.report().reference_values(); }
+  for (int k = 0; k < 6; ++k) { first.step(); first.report().reference_values(); }
   World resumed(cfg);
   resumed.restore_state(first.save_state(), "test");
-  for (int k = 0; k < 6; ++k) { resumed.step(); resumed.reference_values(); }
-  EXPECT_EQ(resumed.reference_value("fit_points"), whole.reference_value("fit_points"));
-  EXPECT_EQ(resumed.reference_value("rate_fit"), whole.reference_value("rate_fit"));
-  EXPECT_GE(whole.reference_value("fit_points"), 12.0);
+  for (int k = 0; k < 6; ++k) { resumed.step(); resumed.report().reference_values(); }
+  EXPECT_EQ(resumed.report().reference_value("fit_points"), whole.report().reference_value("fit_points"));
+  EXPECT_EQ(resumed.report().reference_value("rate_fit"), whole.report().reference_value("rate_fit"));
+  EXPECT_GE(whole.report().reference_value("fit_points"), 12.0);
 }
 
 }  // namespace

@@ -50,7 +50,7 @@ TEST(BurgersViscous, ItsErrorAgainstEq22StopsAtTheFloorTheViscositySets) {
   World w(cfg);
   while (w.time() < 0.8) w.step(0.8 - w.time());
   EXPECT_NEAR(floor, 0.01604, 1e-4);
-  EXPECT_NEAR(w.reference_value("e_seed"), floor, 0.02 * floor);
+  EXPECT_NEAR(w.report().reference_value("e_seed"), floor, 0.02 * floor);
 }
 
 TEST(BurgersUpwind, ConvergesToEq22AtFirstOrder) {
@@ -75,8 +75,8 @@ TEST(BurgersUpwind, TheSeedsNonConservativeSchemeStallsTheShockAtXEqualsA) {
     if (p.v[0][i] >= 0.5 && p.v[0][i + 1] < 0.5)
       crossing = p.x[0][i] + (p.v[0][i] - 0.5) / (p.v[0][i] - p.v[0][i + 1]) * (p.x[0][i + 1] - p.x[0][i]);
   std::printf("shock at t = 1.6: x = %.5f (exact 1.3, scheme stalls at a = 1)\n", crossing);
-  EXPECT_NEAR(crossing, 1.0, 2.0 * w.spacing());
-  EXPECT_GT(w.reference_value("e_seed"), 0.25);  // the reference says so: 0.3 of unit jump misplaced
+  EXPECT_NEAR(crossing, 1.0, 2.0 * w.report().spacing());
+  EXPECT_GT(w.report().reference_value("e_seed"), 0.25);  // the reference says so: 0.3 of unit jump misplaced
 }
 
 TEST(BurgersPointControl, ReinterpolationKeepsGammaZeroAndNoneLetsThePointsMove) {
@@ -110,13 +110,13 @@ TEST(BurgersPointControl, MergeSplitKeepsTheGapsBetweenHalfAndThreeHalvesDxAndCo
     lo = std::min(lo, x[i] - x[i - 1]);
     hi = std::max(hi, x[i] - x[i - 1]);
   }
-  const double dx = w.spacing();
+  const double dx = w.report().spacing();
   std::printf("merge_split, N0 = 480: %zu points at t = 0.8, gaps %.3f ... %.3f dx, e_viscous %.3g\n", p.fluid(),
-              lo / dx, hi / dx, w.reference_value("e_viscous"));
+              lo / dx, hi / dx, w.report().reference_value("e_viscous"));
   EXPECT_NE(p.fluid(), 480u);  // points entered at the inflow end and merged in the compressed ramp
   EXPECT_GE(lo, 0.5 * dx * (1 - 1e-9));
   EXPECT_LE(hi, 1.5 * dx * (1 + 1e-9));
-  EXPECT_LT(w.reference_value("e_viscous"), 1e-4);  // as close to the viscous solution as re-interpolation
+  EXPECT_LT(w.report().reference_value("e_viscous"), 1e-4);  // as close to the viscous solution as re-interpolation
 }
 
 }  // namespace

@@ -31,20 +31,20 @@ struct Measured {
 Measured run(const RunConfig& cfg) {
   World w(cfg);
   Measured r;
-  const double E0 = w.diagnostics().E_tot, t_end = w.params().time.t_end;
-  r.rho0 = r.rho_peak = w.reference_value("rho_max");
+  const double E0 = w.report().diagnostics().E_tot, t_end = w.params().time.t_end;
+  r.rho0 = r.rho_peak = w.report().reference_value("rho_max");
   while (w.time() < t_end) {
     w.step(t_end - w.time());
-    const Diagnostics d = w.diagnostics();
+    const Diagnostics d = w.report().diagnostics();
     r.dE = std::max(r.dE, std::abs(d.E_tot / E0 - 1.0));
     r.P = std::max(r.P, std::hypot(d.P[0], d.P[1], d.P[2]));
     r.L = std::max(r.L, std::hypot(d.L[0], d.L[1], d.L[2]));
-    const double sep = w.reference_value("separation"), e = w.reference_value("sep_err");
+    const double sep = w.report().reference_value("separation"), e = w.report().reference_value("sep_err");
     if (!std::isnan(e)) r.sep_err = std::max(r.sep_err, e);
     if (sep < 1.0 && r.t_merge < 0.0) r.t_merge = w.time();
     r.sep_min = std::min(r.sep_min, sep);
-    r.rho_peak = std::max(r.rho_peak, w.reference_value("rho_max"));
-    r.com = std::max(r.com, w.reference_value("com"));
+    r.rho_peak = std::max(r.rho_peak, w.report().reference_value("rho_max"));
+    r.com = std::max(r.com, w.report().reference_value("com"));
   }
   r.steps = w.steps();
   return r;
@@ -97,12 +97,12 @@ TEST(CollidingPolytropes, StarsStartRelaxed) {
     cfg.set("scene.v", "0", "test");
     cfg.set("scene.relax", relax, "test");
     World w(cfg);
-    const double W = std::abs(w.diagnostics().E_pot), rho0 = w.reference_value("rho_max");
+    const double W = std::abs(w.report().diagnostics().E_pot), rho0 = w.report().reference_value("rho_max");
     double kin = 0.0, drho = 0.0;
     while (w.time() < 1.5) {
       w.step(1.5 - w.time());
-      kin = std::max(kin, w.diagnostics().E_kin / W);
-      drho = std::max(drho, std::abs(w.reference_value("rho_max") / rho0 - 1.0));
+      kin = std::max(kin, w.report().diagnostics().E_kin / W);
+      drho = std::max(drho, std::abs(w.report().reference_value("rho_max") / rho0 - 1.0));
     }
     return std::pair{kin, drho};
   };

@@ -39,7 +39,7 @@ double run_inside(World& w, double t_end) {
         return vmax;
       }
     }
-    vmax = std::max(vmax, w.diagnostics().v_max);
+    vmax = std::max(vmax, w.report().diagnostics().v_max);
   }
   return vmax;
 }
@@ -52,7 +52,7 @@ TEST_P(DamBreakTank, NoParticleCrossesAWall) {
   // T = t sqrt(2 g / a) = 3.1: the surge reaches the far wall (Z/a = 4) at T ~ 3
   const double vmax = run_inside(w, 0.7);
   std::printf("dam_break %s / %s: v_max = %.3g m/s, front Z/a = %.3f at T = %.2f\n", force, walls, vmax,
-              w.reference_value("front"), w.reference_value("T"));
+              w.report().reference_value("front"), w.report().reference_value("T"));
   // no particle is flung out: the free-fall speed from the column top is sqrt(2 g 2a) = 6.3 m/s
   EXPECT_LT(vmax, 9.0);
 }
@@ -73,10 +73,10 @@ TEST(DamBreakFront, WithinFivePercentOfTheMeasuredFronts) {
   int compared = 0;
   while (w.time() < t_end) {
     w.advance_to(std::min(t_end, w.time() + 0.02));
-    const double err = w.reference_value("err_data");
+    const double err = w.report().reference_value("err_data");
     if (std::isnan(err)) continue;
     ++compared;
-    if (err > worst) { worst = err; worst_T = w.reference_value("T"); }
+    if (err > worst) { worst = err; worst_T = w.report().reference_value("T"); }
   }
   std::printf("dam_break front: largest error %.2f%% at T = %.2f over %d comparisons\n", 100 * worst, worst_T, compared);
   EXPECT_GT(compared, 20);
@@ -97,7 +97,7 @@ TEST_P(DamBreakSlope, ComesToRest) {
   const double t_end = 5.0;  // the seed's water is at rest by 4.5 s
   while (w.time() < t_end) {
     w.step(t_end - w.time());
-    const Diagnostics d = w.diagnostics();
+    const Diagnostics d = w.report().diagnostics();
     E = d.E_kin;
     peak = std::max(peak, E);
     vmax = std::max(vmax, d.v_max);

@@ -28,8 +28,8 @@ Axes run_drop(const std::string& force, double t) {
   cfg.validate();
   World w(cfg);
   w.advance_to(t);
-  const Diagnostics d = w.diagnostics();
-  const Axes a{w.reference_value("err_major"), w.reference_value("err_minor"), w.reference_value("err_ab"),
+  const Diagnostics d = w.report().diagnostics();
+  const Axes a{w.report().reference_value("err_major"), w.report().reference_value("err_minor"), w.report().reference_value("err_ab"),
                std::hypot(d.P[0], d.P[1])};
   std::printf("%s t=%g: err_major %.4f err_minor %.4f |ab-1| %.4f |P| %.3g\n", force.c_str(), t, a.err_major,
               a.err_minor, a.err_ab, a.P_norm);

@@ -15,11 +15,11 @@ TEST(DustSphere, CollapseConservesEnergyAndAngularMomentum) {
   RunConfig cfg = RunConfig::from_scene("dust_sphere");
   cfg.set("scene.n", "1000", "test");
   World w(cfg);
-  const double E0 = w.diagnostics().E_tot;
+  const double E0 = w.report().diagnostics().E_tot;
   double worst = 0.0, L = 0.0, peak_kin = 0.0;
   while (w.time() < 1.6) {  // through the collapse (the seed's Fig. 2.17: over by t = 1.2)
     w.step(1.6 - w.time());
-    const Diagnostics d = w.diagnostics();
+    const Diagnostics d = w.report().diagnostics();
     worst = std::max(worst, std::abs(d.E_tot / E0 - 1.0));
     L = std::max(L, std::hypot(d.L[0], d.L[1], d.L[2]));
     peak_kin = std::max(peak_kin, d.E_kin);
@@ -33,12 +33,12 @@ TEST(DustSphere, CollapseConservesEnergyAndAngularMomentum) {
 
 TEST(Evrard, ConservesEnergyToThreeAndHasTheSeedsEnergyCurves) {
   World w(RunConfig::from_scene("evrard"));
-  const double E0 = w.diagnostics().E_tot;
+  const double E0 = w.report().diagnostics().E_tot;
   double worst = 0.0;
   struct Extreme { double value, t; } kin{0, 0}, therm{0, 0}, pot{0, 0};
   while (w.time() < 3.0) {
     w.step(3.0 - w.time());
-    const Diagnostics d = w.diagnostics();
+    const Diagnostics d = w.report().diagnostics();
     worst = std::max(worst, std::abs(d.E_tot / E0 - 1.0));
     if (d.E_kin > kin.value) kin = {d.E_kin, d.t};
     if (d.E_int > therm.value) therm = {d.E_int, d.t};
@@ -63,16 +63,16 @@ TEST(Polytrope, RelaxedStarMatchesLaneEmdenAndStaysInEquilibrium) {
   // relaxation with the damping force to t = 4 (as the scene ships), then 2 time units without it
   World w(RunConfig::from_scene("polytrope"));
   w.advance_to(4.0);
-  const double relaxed_err = w.reference_value("profile_err"), relaxed_virial = w.reference_value("virial");
+  const double relaxed_err = w.report().reference_value("profile_err"), relaxed_virial = w.report().reference_value("virial");
   Params p = w.params();
   p.physics.body_force = BodyForce::None;
   w.set_params(p);
   double worst_err = 0.0, worst_virial = 0.0, vmax = 0.0;
   while (w.time() < 6.0) {
     w.advance_to(std::min(6.0, w.time() + 0.25));
-    worst_err = std::max(worst_err, w.reference_value("profile_err"));
-    worst_virial = std::max(worst_virial, w.reference_value("virial_err"));
-    vmax = std::max(vmax, w.diagnostics().v_max);
+    worst_err = std::max(worst_err, w.report().reference_value("profile_err"));
+    worst_virial = std::max(worst_virial, w.report().reference_value("virial_err"));
+    vmax = std::max(vmax, w.report().diagnostics().v_max);
   }
   std::printf("polytrope n = 1: relaxed density %.2f%% off Lane-Emden inside 0.8 R, virial %.4f; free for 2 time "
               "units: density <= %.2f%%, |virial - 1| <= %.4f, v_max %.3g\n",

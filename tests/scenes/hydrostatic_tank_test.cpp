@@ -19,13 +19,13 @@ World settled(const std::string& walls) {
 TEST(HydrostaticTank, MidDepthPressureWithinTwoPercentAfterSettling) {
   World w = settled("dummy");
   w.advance_to(1.0);
-  const double err = w.reference_value("err_mid"), l1 = w.reference_value("L1_p_rel");
+  const double err = w.report().reference_value("err_mid"), l1 = w.report().reference_value("L1_p_rel");
   std::printf("hydrostatic, dummy walls, t = 1: |p_mid/exact - 1| = %.4f, L1(P)/(rho0 g H) = %.4f, v_max = %.3g\n",
-              err, l1, w.diagnostics().v_max);
+              err, l1, w.report().diagnostics().v_max);
   EXPECT_LT(err, 0.02);   // the required criterion (measured 0.4%)
   EXPECT_LT(l1, 0.02);    // everywhere, not only at mid-depth (measured 0.1%)
   // at rest: the start-up waves have decayed to far below the free-fall speed sqrt(2 g H) = 3.1 m/s
-  EXPECT_LT(w.diagnostics().v_max, 0.05);
+  EXPECT_LT(w.report().diagnostics().v_max, 0.05);
 }
 
 TEST(HydrostaticTank, LennardJonesWallsHoldTheWaterUp) {
@@ -40,7 +40,7 @@ TEST(HydrostaticTank, LennardJonesWallsHoldTheWaterUp) {
   };
   const double y0 = mean_y(w.particles());
   w.advance_to(1.0);
-  const double err = w.reference_value("err_mid");
+  const double err = w.report().reference_value("err_mid");
   std::printf("hydrostatic, Lennard-Jones walls, t = 1: |p_mid/exact - 1| = %.4f, centre of mass moved %.4f m\n",
               err, mean_y(w.particles()) - y0);
   EXPECT_NEAR(mean_y(w.particles()), y0, 0.05);  // one spacing (measured: it sinks 0.51 dx onto the wall)

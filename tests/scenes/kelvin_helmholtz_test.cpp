@@ -32,22 +32,22 @@ TEST(KelvinHelmholtz, StartIsTheSmoothSetUp) {
   EXPECT_NEAR(pmax, 2.5, 1e-12);
   EXPECT_NEAR(rmin, 1.0, 0.01);  // the summation density follows the profile's rho 1 | 2
   EXPECT_NEAR(rmax, 2.0, 0.01);
-  EXPECT_NEAR(w.reference_value("amplitude"), 0.01, 2e-4);
-  EXPECT_NEAR(w.reference_value("rate_theory"), 2.8193, 1e-3);
+  EXPECT_NEAR(w.report().reference_value("amplitude"), 0.01, 2e-4);
+  EXPECT_NEAR(w.report().reference_value("rate_theory"), 2.8193, 1e-3);
 }
 
 TEST(KelvinHelmholtz, ModeGrowsAtTheLinearRateAt64) {
   World w(kh_config(64));
   for (int k = 1; k <= 20; ++k) {  // the reference's history: one evaluation every 0.05
     w.advance_to(0.05 * k);
-    w.reference_values();
+    w.report().reference_values();
   }
-  const double rate = w.reference_value("rate_fit"), theory = w.reference_value("rate_theory");
+  const double rate = w.report().reference_value("rate_fit"), theory = w.report().reference_value("rate_theory");
   std::printf("64^2: amplitude %.4g at t = 1, fitted rate %.4f, theory %.4f, ratio %.3f\n",
-              w.reference_value("amplitude"), rate, theory, rate / theory);
-  EXPECT_EQ(w.reference_value("fit_points"), 11.0);
+              w.report().reference_value("amplitude"), rate, theory, rate / theory);
+  EXPECT_EQ(w.report().reference_value("fit_points"), 11.0);
   EXPECT_LT(std::abs(rate / theory - 1.0), 0.2);  // measured 0.88
-  EXPECT_GT(w.reference_value("amplitude"), 0.025);  // grown from 0.01 (measured 0.032)
+  EXPECT_GT(w.report().reference_value("amplitude"), 0.025);  // grown from 0.01 (measured 0.032)
 }
 
 }  // namespace

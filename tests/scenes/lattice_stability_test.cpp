@@ -100,13 +100,13 @@ double measured_rate(const std::string& kernel, double t_end, double* v_final) {
   int n = 0;
   while (w.time() < t_end) {
     w.step();
-    const double v = w.diagnostics().v_max;
+    const double v = w.report().diagnostics().v_max;
     if (v > 1e-11 && v < 1e-5) {
       const double y = std::log(v), t = w.time();
       st += t; sy += y; stt += t * t; sty += t * y; ++n;
     }
   }
-  *v_final = w.diagnostics().v_max;
+  *v_final = w.report().diagnostics().v_max;
   return n > 10 ? (n * sty - st * sy) / (n * stt - st * st) : 0.0;
 }
 

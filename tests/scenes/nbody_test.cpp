@@ -17,16 +17,16 @@ TEST(TwoBodyFall, MatchesEquation217ToOneInAMillion) {
   int compared = 0;
   while (w.time() < w.params().time.t_end) {
     w.step(w.params().time.t_end - w.time());
-    const double e = w.reference_value("err_r");
+    const double e = w.report().reference_value("err_r");
     if (std::isnan(e)) continue;
     worst = std::max(worst, e);
     ++compared;
   }
   std::printf("two_body_fall: largest |r - r_exact| / r0 = %.3g over %d steps, r = %.4g AU at t = %.4g yr\n", worst,
-              compared, w.reference_value("r"), w.time());
+              compared, w.report().reference_value("r"), w.time());
   EXPECT_GT(compared, 100);
   EXPECT_LT(worst, 1e-6);
-  EXPECT_LT(w.reference_value("r"), 0.1);  // it got close to the encounter
+  EXPECT_LT(w.report().reference_value("r"), 0.1);  // it got close to the encounter
 }
 
 /// The largest |E/E0 - 1| over every step of orbits 1-100 and of orbits 901-1000 of the kepler scene
@@ -39,10 +39,10 @@ std::pair<double, double> kepler_energy(const char* integrator) {
   double first = 0.0, last = 0.0;
   for (;;) {
     w.step();
-    const double orbits = w.reference_value("orbits");
+    const double orbits = w.report().reference_value("orbits");
     if (orbits > 1000.0) break;
-    if (orbits <= 100.0) first = std::max(first, w.reference_value("dE"));
-    if (orbits > 900.0) last = std::max(last, w.reference_value("dE"));
+    if (orbits <= 100.0) first = std::max(first, w.report().reference_value("dE"));
+    if (orbits > 900.0) last = std::max(last, w.report().reference_value("dE"));
   }
   return {first, last};
 }
@@ -62,22 +62,22 @@ TEST(SolarSystem, LeapfrogConservesAngularMomentumOverACentury) {
   double worst = 0.0;
   while (w.time() < 100.0) {
     w.advance_to(std::min(100.0, w.time() + 1.0));
-    worst = std::max(worst, w.reference_value("dL"));
+    worst = std::max(worst, w.report().reference_value("dL"));
   }
-  std::printf("solar_system: |dL/L| <= %.3g and |dE/E| = %.3g after 100 yr\n", worst, w.reference_value("dE"));
+  std::printf("solar_system: |dL/L| <= %.3g and |dE/E| = %.3g after 100 yr\n", worst, w.report().reference_value("dE"));
   EXPECT_LT(worst, 1e-10);
-  EXPECT_LT(w.reference_value("dE"), 1e-5);
+  EXPECT_LT(w.report().reference_value("dE"), 1e-5);
 }
 
 TEST(NBody, RunsNoSphStageAndAllocatesNoSphField) {
   World w(RunConfig::from_scene("dust_sphere"));
-  EXPECT_EQ(w.stage_names(), std::vector<std::string>{"self-gravity: Barnes-Hut tree"});
+  EXPECT_EQ(w.report().stage_names(), std::vector<std::string>{"self-gravity: Barnes-Hut tree"});
   for (Field f : {Field::Density, Field::Pressure, Field::Energy, Field::Omega, Field::SoundSpeed, Field::SignalSpeed,
                   Field::Neighbours})
     EXPECT_FALSE(w.particles().has(f)) << info(f).key;
   EXPECT_TRUE(w.particles().has(Field::Potential));
   w.step();
-  EXPECT_EQ(w.neighbour_pairs(), 0u);  // no neighbour lists are built
+  EXPECT_EQ(w.neighbours().pairs(), 0u);  // no neighbour lists are built
 }
 
 TEST(NBody, SceneWithoutGravityRefusesIt) {

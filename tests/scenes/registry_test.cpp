@@ -42,7 +42,7 @@ TEST_P(EveryScene, StepsWithoutNaN) {
   }
   EXPECT_GT(w.time(), 0.0);
   // a scene with a reference reports one finite-or-nan value per column
-  EXPECT_EQ(w.reference_values().size(), w.reference_columns().size());
+  EXPECT_EQ(w.report().reference_values().size(), w.report().reference_columns().size());
 }
 
 std::vector<std::string> scene_names() {

@@ -23,19 +23,19 @@ BlastRun run_blast(const char* scene, const char* n_side) {
   World w(cfg);
   BlastRun r{};
   r.n = w.particles().fluid();
-  const Diagnostics d0 = w.diagnostics();
+  const Diagnostics d0 = w.report().diagnostics();
   // E0 = E + M u_ambient, M = rho1 V (the box is filled at density 1), u_ambient = p0 / ((gamma-1) rho1)
   const double volume = std::pow(cfg.scene->dim == 2 ? 1.0 : 1.2, cfg.scene->dim);
   r.dE_start = std::abs(d0.E_tot - (1.0 + volume * 1e-5 / (2.0 / 3.0)));
   const auto t0 = std::chrono::steady_clock::now();
   while (w.time() < 0.1) w.step(0.1 - w.time());
-  r.R_err = w.reference_value("R_err");
-  r.dE = w.reference_value("dE_rel");
-  r.rho_peak = w.reference_value("rho_peak");
-  r.L1 = w.reference_value("L1_rho");
+  r.R_err = w.report().reference_value("R_err");
+  r.dE = w.report().reference_value("dE_rel");
+  r.rho_peak = w.report().reference_value("rho_peak");
+  r.L1 = w.report().reference_value("L1_rho");
   std::printf("%s n_side = %s (%zu particles): R = %.4f against %.4f (err %.4f), |dE/E| = %.3g, rho_peak = %.3f, "
               "L1(rho) = %.3f, %lld steps, %.1f s\n",
-              scene, n_side, r.n, w.reference_value("R"), w.reference_value("R_exact"), r.R_err, r.dE, r.rho_peak, r.L1,
+              scene, n_side, r.n, w.report().reference_value("R"), w.report().reference_value("R_exact"), r.R_err, r.dE, r.rho_peak, r.L1,
               static_cast<long long>(w.steps()),
               std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   return r;

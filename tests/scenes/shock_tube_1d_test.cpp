@@ -46,7 +46,7 @@ Plateau star_plateau(const World& w, const RiemannSolver& rs, double t, double m
 TEST(Sod, PlateauWithinOnePercentAndL1RhoBound) {
   RunConfig cfg = RunConfig::from_scene("sod");
   World w(cfg);
-  const double E0 = w.diagnostics().E_tot;
+  const double E0 = w.report().diagnostics().E_tot;
   w.advance_to(0.2);
   ASSERT_DOUBLE_EQ(w.time(), 0.2);
   const RiemannSolver rs({1.0, 0.0, 1.0}, {0.125, 0.0, 0.1}, 1.4);
@@ -55,11 +55,11 @@ TEST(Sod, PlateauWithinOnePercentAndL1RhoBound) {
   // Toro's Table 4.1, test 1: plateaus within 1% of the exact p* = 0.30313, u* = 0.92745 (measured: 0.1% and 0.06%)
   EXPECT_NEAR(pl.p / 0.30313, 1.0, 0.01);
   EXPECT_NEAR(pl.v / 0.92745, 1.0, 0.01);
-  struct { double L1_rho, L1_v, L1_p; } e{w.reference_value("L1_rho"), w.reference_value("L1_v"),
-                                          w.reference_value("L1_p")};
+  struct { double L1_rho, L1_v, L1_p; } e{w.report().reference_value("L1_rho"), w.report().reference_value("L1_v"),
+                                          w.report().reference_value("L1_p")};
   std::printf("sod t=0.2: p*/exact-1 = %.2e, u*/exact-1 = %.2e, L1(rho) = %.3e, L1(v) = %.3e, L1(p) = %.3e, "
               "dE/E = %.2e\n", pl.p / 0.30313 - 1, pl.v / 0.92745 - 1, e.L1_rho, e.L1_v, e.L1_p,
-              w.diagnostics().E_tot / E0 - 1);
+              w.report().diagnostics().E_tot / E0 - 1);
   // L1(rho) <= 5e-3 at the default 400|50 particles (measured 3.6e-3): an M4 SPH shock is ~3 h wide and
   // the contact ~4 h, so the error is dominated by those ~20 particles out of 450.
   EXPECT_LT(e.L1_rho, 5e-3);
@@ -67,7 +67,7 @@ TEST(Sod, PlateauWithinOnePercentAndL1RhoBound) {
   EXPECT_LT(e.L1_p, 5e-3);
   // Total energy with viscosity and conduction: the dissipative terms are antisymmetric, so only the
   // time integration (leapfrog, cfl 0.3) and the h tolerance break it (measured 4e-6).
-  EXPECT_NEAR(w.diagnostics().E_tot / E0, 1.0, 2e-5);
+  EXPECT_NEAR(w.report().diagnostics().E_tot / E0, 1.0, 2e-5);
 }
 
 TEST(Sod, ErrorFallsWithResolution) {
@@ -78,7 +78,7 @@ TEST(Sod, ErrorFallsWithResolution) {
     cfg.values["n_left"] = n;
     World w(cfg);
     w.advance_to(0.2);
-    L1[k++] = w.reference_value("L1_rho");
+    L1[k++] = w.report().reference_value("L1_rho");
   }
   // first-order convergence at discontinuities: 4x the particles should at least halve the error
   EXPECT_LT(L1[1], 0.5 * L1[0]);
@@ -91,14 +91,14 @@ TEST(Sod, EveryIntegratorConservesEnergyAndMatchesThePlateau) {
     cfg.set("integrator", integ, "test");
     cfg.values["n_left"] = 200;
     World w(cfg);
-    const double E0 = w.diagnostics().E_tot;
+    const double E0 = w.report().diagnostics().E_tot;
     w.advance_to(0.2);
     const Plateau pl = star_plateau(w, rs, 0.2, 0.03);
     EXPECT_NEAR(pl.p / 0.30313, 1.0, 0.015) << integ;
     EXPECT_NEAR(pl.v / 0.92745, 1.0, 0.015) << integ;
     std::printf("%s: p*/exact-1 = %.2e, u*/exact-1 = %.2e, dE/E = %.2e\n", integ, pl.p / 0.30313 - 1,
-                pl.v / 0.92745 - 1, w.diagnostics().E_tot / E0 - 1);
-    EXPECT_NEAR(w.diagnostics().E_tot / E0, 1.0, 1e-4) << integ;
+                pl.v / 0.92745 - 1, w.report().diagnostics().E_tot / E0 - 1);
+    EXPECT_NEAR(w.report().diagnostics().E_tot / E0, 1.0, 1e-4) << integ;
   }
 }
 
@@ -110,9 +110,9 @@ TEST(Sod, StrongViscosityKeepsTheTimestepStable) {
   cfg.set("alpha", "8", "test");
   cfg.values["n_left"] = 200;
   World w(cfg);
-  const double E0 = w.diagnostics().E_tot;
+  const double E0 = w.report().diagnostics().E_tot;
   w.advance_to(0.2);
-  EXPECT_NEAR(w.diagnostics().E_tot / E0, 1.0, 1e-4);  // measured 2e-7 at n_left = 400
+  EXPECT_NEAR(w.report().diagnostics().E_tot / E0, 1.0, 1e-4);  // measured 2e-7 at n_left = 400
 }
 
 TEST(ShocktubeCastellanos, PlateauMatchesExactSolution) {
@@ -127,8 +127,8 @@ TEST(ShocktubeCastellanos, PlateauMatchesExactSolution) {
   EXPECT_NEAR(pl.p / star.p, 1.0, 0.01);
   EXPECT_NEAR(pl.v / star.v, 1.0, 0.01);
   std::printf("seed-003 tube t=0.2: p*/exact-1 = %.2e, u*/exact-1 = %.2e, L1(rho) = %.3e\n", pl.p / star.p - 1,
-              pl.v / star.v - 1, w.reference_value("L1_rho"));
-  EXPECT_LT(w.reference_value("L1_rho"), 3e-3);
+              pl.v / star.v - 1, w.report().reference_value("L1_rho"));
+  EXPECT_LT(w.report().reference_value("L1_rho"), 3e-3);
 }
 
 class RiemannVariant : public ::testing::TestWithParam<const char*> {};
@@ -144,10 +144,10 @@ TEST_P(RiemannVariant, StarStateWithinTwoPercentAndPositiveState) {
     ASSERT_GT(p[Field::Density][i], 0.0) << GetParam();
     ASSERT_GT(p[Field::Pressure][i], 0.0) << GetParam();
   }
-  std::printf("%s: p* error %.2e, u* error %.2e, L1(rho) %.3e\n", GetParam(), w.reference_value("p_star_err"),
-              w.reference_value("u_star_err"), w.reference_value("L1_rho"));
-  EXPECT_LT(w.reference_value("p_star_err"), 0.02);
-  EXPECT_LT(w.reference_value("u_star_err"), 0.02);
+  std::printf("%s: p* error %.2e, u* error %.2e, L1(rho) %.3e\n", GetParam(), w.report().reference_value("p_star_err"),
+              w.report().reference_value("u_star_err"), w.report().reference_value("L1_rho"));
+  EXPECT_LT(w.report().reference_value("p_star_err"), 0.02);
+  EXPECT_LT(w.report().reference_value("u_star_err"), 0.02);
 }
 
 INSTANTIATE_TEST_SUITE_P(TubeScenes, RiemannVariant, ::testing::Values("sod", "lax", "toro1", "toro3", "toro4", "toro5"));
@@ -162,13 +162,13 @@ TEST(Toro123, RunsToItsEndAndReportsItsNearVacuumDensityError) {
     ASSERT_GT(p[Field::Density][i], 0.0);
     ASSERT_GT(p[Field::Pressure][i], 0.0);
   }
-  const double err = w.reference_value("rho_min_err");
-  std::printf("toro2 (123): rho_min %.4f against %.4f exact, error %.3f\n", w.reference_value("rho_min"),
-              w.reference_value("rho_min_exact"), err);
-  EXPECT_NEAR(w.reference_value("rho_min_exact"), 0.0235, 0.002);
+  const double err = w.report().reference_value("rho_min_err");
+  std::printf("toro2 (123): rho_min %.4f against %.4f exact, error %.3f\n", w.report().reference_value("rho_min"),
+              w.report().reference_value("rho_min_exact"), err);
+  EXPECT_NEAR(w.report().reference_value("rho_min_exact"), 0.0235, 0.002);
   EXPECT_TRUE(std::isfinite(err));
   EXPECT_LT(err, 1.0);  // measured 0.48 at 200 | 200 particles
-  EXPECT_TRUE(std::isnan(w.reference_value("p_star_err")));  // its star region is narrower than 8 h
+  EXPECT_TRUE(std::isnan(w.report().reference_value("p_star_err")));  // its star region is narrower than 8 h
 }
 
 TEST(ShockTube, EqualMassesKeepTheRightDensityExactWhenTheCountRounds) {
@@ -210,8 +210,8 @@ TEST(ShockTube, ASmoothedDiaphragmStartsOnItsProfileAndReachesTheSameStarState) 
   EXPECT_LT(worst_p, 1e-12);  // the pressure is set from the profile after the density sum
   // the waves start w wide: at t = 0.2 the star state is within 2% (measured 1.3e-2 / 3.8e-3)
   w.advance_to(0.2);
-  EXPECT_LT(w.reference_value("p_star_err"), 0.02);
-  EXPECT_LT(w.reference_value("u_star_err"), 0.01);
+  EXPECT_LT(w.report().reference_value("p_star_err"), 0.02);
+  EXPECT_LT(w.report().reference_value("u_star_err"), 0.01);
 }
 
 }  // namespace

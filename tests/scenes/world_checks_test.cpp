@@ -20,7 +20,7 @@ World& run_to_end(World& w) {
 }
 
 const RunWarning* find(const World& w, const std::string& kind) {
-  for (const RunWarning& x : w.warnings())
+  for (const RunWarning& x : w.checks().warnings())
     if (x.kind == kind) return &x;
   return nullptr;
 }
@@ -32,7 +32,7 @@ void run_until_stopped(const RunConfig& cfg, std::string& why) {
   try {
     for (int s = 0; s < 200; ++s) {
       w.step();
-      const Snapshot snap = w.snapshot();
+      const Snapshot snap = w.report().snapshot();
       for (const auto& f : snap.fields)
         for (float v : f.values) ASSERT_TRUE(std::isfinite(v)) << f.name << " at step " << w.steps() << " is " << v;
     }
@@ -45,7 +45,7 @@ TEST(WorldChecks, CleanSodRunHasNoWarnings) {
   // leapfrog at cfl 0.3 keeps E_tot to 7e-6 of its scale (bound 1e-3); the walls stay out of reach
   World w(RunConfig::from_scene("sod"));
   run_to_end(w);
-  EXPECT_TRUE(w.warnings().empty()) << w.warnings().front().message;
+  EXPECT_TRUE(w.checks().warnings().empty()) << w.checks().warnings().front().message;
 }
 
 TEST(WorldChecks, ForwardEulerOnSodIsWarnedAbout) {
@@ -85,7 +85,7 @@ TEST(WorldChecks, LongStepsOnSodAreWarnedAboutThenStopped) {
   EXPECT_GE(particle, 0) << why;  // named: the particle with the largest acceleration
   EXPECT_LT(step, 30) << why;     // at most 10% of the scale gained: stopped within a few steps
   // what it had written up to then is bounded: the last energy is within the stop threshold's jump
-  const Diagnostics d = bad.diagnostics();
+  const Diagnostics d = bad.report().diagnostics();
   EXPECT_TRUE(std::isfinite(d.E_tot));
 }
 
@@ -115,7 +115,7 @@ TEST(WorldChecks, ARunPastItsReferenceIsWarnedAbout) {
   cfg.set("scene.n_left", "300", "test");
   World w(cfg);
   const double expected = 0.3 / (2.0 * std::sqrt(1.4));
-  ASSERT_NEAR(w.reference()->valid_until(), expected, 1e-9);
+  ASSERT_NEAR(w.report().reference()->valid_until(), expected, 1e-9);
   w.advance_to(0.1);
   EXPECT_EQ(find(w, "reference"), nullptr);
   w.advance_to(0.2);
@@ -124,7 +124,7 @@ TEST(WorldChecks, ARunPastItsReferenceIsWarnedAbout) {
   EXPECT_GT(r->t, expected);
   // at the default [-0.3, 1] the reference applies to the end
   World wide(RunConfig::from_scene("toro1"));
-  EXPECT_GT(wide.reference()->valid_until(), wide.params().time.t_end);
+  EXPECT_GT(wide.report().reference()->valid_until(), wide.params().time.t_end);
 }
 
 // Found by the stepper's soak test: a dam break at a fixed step of 10 s (forward Euler) reached Tait

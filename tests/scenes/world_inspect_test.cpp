@@ -1,4 +1,4 @@
-// World::inspect, the particle inspector: the terms of a particle's momentum and energy equations add up
+// Report::inspect, the particle inspector: the terms of a particle's momentum and energy equations add up
 // to the rates the stages compute for it (gas: standard grad-h with Monaghan viscosity, conduction and
 // the energy equation; liquids: standard-corrected with dummy walls and gravity, corrected stress form,
 // standard with XSPH), its neighbours carry its summation density, the shock heats by viscosity, and
@@ -37,7 +37,7 @@ Balance balance(const Inspection& in) {
 void expect_terms_add_up(const World& w, std::int64_t stride, const char* what) {
   std::size_t checked = 0;
   for (std::int64_t id = 0; id < static_cast<std::int64_t>(w.particles().size()); id += stride) {
-    const auto in = w.inspect(id);
+    const auto in = w.report().inspect(id);
     ASSERT_TRUE(in.has_value());
     if (in->wall) continue;
     const Balance b = balance(*in);
@@ -64,7 +64,7 @@ TEST(WorldInspect, SodTermsAddUpAndTheShockHeatsByViscosity) {
   std::size_t hot = 0;
   for (std::size_t i = 0; i < p.fluid(); ++i)
     if (p[Field::EnergyRate][i] > p[Field::EnergyRate][hot]) hot = i;
-  const auto in = w.inspect(p.id[hot]);
+  const auto in = w.report().inspect(p.id[hot]);
   ASSERT_TRUE(in.has_value());
   EXPECT_EQ(in->formulation, "standard");
   ASSERT_NE(term(*in, "pressure"), nullptr);
@@ -81,7 +81,7 @@ TEST(WorldInspect, NeighboursCarryTheSummationDensity) {
   World w(RunConfig::from_scene("sod"));
   w.advance_to(0.05);
   for (std::int64_t id : {10, 300, 420}) {
-    const auto in = w.inspect(id);
+    const auto in = w.report().inspect(id);
     ASSERT_TRUE(in.has_value());
     // rho_a = m_a W(0, h_a) + sum_b m_b W(r_ab, h_a): the shares and the self term make 1
     double sum = in->m * Kernel(KernelType::M4, 1).W(0.0, in->h) / in->rho;
@@ -98,13 +98,13 @@ TEST(WorldInspect, StoredAndReEvaluatedRatesAgree) {
   // tolerance (1e-6). After leapfrog steps it evaluated at the predicted velocity: O(dt) apart.
   World w(RunConfig::from_scene("sod"));
   for (std::int64_t id : {100, 399, 401}) {
-    const auto in = w.inspect(id);
+    const auto in = w.report().inspect(id);
     const Balance b = balance(*in);
     EXPECT_LE((in->a_total - in->a_stored).norm(), 1e-4 * b.a_scale + 1e-12) << id;
   }
   w.advance_to(0.05);
   for (std::int64_t id : {100, 399, 401}) {
-    const auto in = w.inspect(id);
+    const auto in = w.report().inspect(id);
     const Balance b = balance(*in);
     EXPECT_LE((in->a_total - in->a_stored).norm(), 0.05 * b.a_scale + 1e-12) << id;
   }
@@ -125,7 +125,7 @@ TEST(WorldInspect, LiquidsTermsAddUp) {
     World w(cfg);
     for (int k = 0; k < 20; ++k) w.step();
     expect_terms_add_up(w, 61, "dam_break");
-    const auto in = w.inspect(0);
+    const auto in = w.report().inspect(0);
     ASSERT_TRUE(in.has_value());
     EXPECT_EQ(in->formulation, "standard-corrected");
     const InspectTerm* g = term(*in, "body force: uniform g");
@@ -137,7 +137,7 @@ TEST(WorldInspect, LiquidsTermsAddUp) {
     World w(drop({{"physics.force", "corrected"}, {"physics.viscosity", "laplacian"}, {"visc.nu", "0.01"}}));
     for (int k = 0; k < 10; ++k) w.step();
     expect_terms_add_up(w, 97, "elliptical_drop_corrected");
-    const auto in = w.inspect(5);
+    const auto in = w.report().inspect(5);
     EXPECT_EQ(in->formulation, "corrected (stress form)");
     EXPECT_NE(term(*in, "viscous stress"), nullptr);
   }
@@ -153,7 +153,7 @@ TEST(WorldInspect, InspectingLeavesTheRunUnchanged) {
   for (int k = 0; k < 40; ++k) {  // across two Morton reorderings (every 16 steps)
     a.step();
     b.step();
-    ASSERT_TRUE(b.inspect(k * 7 % 450).has_value());
+    ASSERT_TRUE(b.report().inspect(k * 7 % 450).has_value());
   }
   EXPECT_EQ(test::state_hash(a.particles()), test::state_hash(b.particles()));
   EXPECT_EQ(a.time(), b.time());
@@ -161,13 +161,13 @@ TEST(WorldInspect, InspectingLeavesTheRunUnchanged) {
 
 TEST(WorldInspect, UnknownIdAndWalls) {
   World w(RunConfig::from_scene("sod"));
-  EXPECT_FALSE(w.inspect(-1).has_value());
-  EXPECT_FALSE(w.inspect(static_cast<std::int64_t>(w.particles().size())).has_value());
+  EXPECT_FALSE(w.report().inspect(-1).has_value());
+  EXPECT_FALSE(w.report().inspect(static_cast<std::int64_t>(w.particles().size())).has_value());
   RunConfig cfg = RunConfig::from_scene("dam_break");
   cfg.set("scene.dx", "0.05", "test");
   World d(cfg);
   const Particles& p = d.particles();
-  const auto in = d.inspect(p.id[p.fluid()]);  // the first wall particle
+  const auto in = d.report().inspect(p.id[p.fluid()]);  // the first wall particle
   ASSERT_TRUE(in.has_value());
   EXPECT_TRUE(in->wall);
   EXPECT_TRUE(in->terms.empty());

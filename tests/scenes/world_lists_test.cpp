@@ -1,4 +1,4 @@
-// Neighbour lists kept between evaluations (world_lists.cpp) give the pairs a fresh search gives: runs
+// Neighbour lists kept between evaluations (neighbour_cache.cpp) give the pairs a fresh search gives: runs
 // that keep their lists agree with runs that build new lists at every evaluation to round-off (the
 // pairs come in another order), where one missing pair would show at the 1e-3 level. Scenes: a periodic
 // gas box whose particles wrap through its edges (Kelvin-Helmholtz), a tube with mirror walls (Sod), an
@@ -29,7 +29,7 @@ RunResult run(const char* scene, std::vector<std::pair<const char*, const char*>
   std::vector<double> x0(p.size());
   for (std::size_t k = 0; k < p.size(); ++k) x0[k] = p.x[0][w.by_id()[k]];
   RunResult r;
-  const std::int64_t evals0 = w.evaluations(), builds0 = w.list_builds();  // the steps' own
+  const std::int64_t evals0 = w.report().evaluations(), builds0 = w.neighbours().builds();  // the steps' own
   std::vector<char> crossed(p.size(), 0);
   for (int s = 0; s < steps; ++s) {
     w.step();
@@ -44,8 +44,8 @@ RunResult run(const char* scene, std::vector<std::pair<const char*, const char*>
   }
   if (w.domain().bc[0] == Boundary::Periodic) r.Lx = w.domain().length(0);
   if (w.domain().bc[1] == Boundary::Periodic) r.Ly = w.domain().length(1);
-  r.evaluations = w.evaluations() - evals0;
-  r.builds = w.list_builds() - builds0;
+  r.evaluations = w.report().evaluations() - evals0;
+  r.builds = w.neighbours().builds() - builds0;
   r.wrapped = static_cast<std::size_t>(std::count(crossed.begin(), crossed.end(), 1));
   return r;
 }

@@ -25,7 +25,7 @@ TEST(WorldReorder, SnapshotsFollowIdsWhateverTheStorageOrder) {
   std::iota(expected.begin(), expected.end(), std::int64_t{0});
   ASSERT_EQ(sorted, expected) << "every id once";
   EXPECT_NE(ids, expected) << "the storage is spatially sorted, not in id order";
-  const Snapshot snap = w.snapshot();
+  const Snapshot snap = w.report().snapshot();
   const auto& by_id = w.by_id();
   for (std::size_t k = 0; k < p.size(); ++k) {
     ASSERT_EQ(p.id[by_id[k]], static_cast<std::int64_t>(k));
@@ -38,9 +38,9 @@ TEST(WorldReorder, MomentumStaysConservedAcrossReorders) {
   RunConfig cfg = RunConfig::from_scene("box_random");
   cfg.set("scene.count", "2000", "world_reorder_test");
   World w(cfg);
-  const Diagnostics d0 = w.diagnostics();
+  const Diagnostics d0 = w.report().diagnostics();
   for (int s = 0; s < 50; ++s) w.step();  // three reorders
-  const Diagnostics d1 = w.diagnostics();
+  const Diagnostics d1 = w.report().diagnostics();
   // a pairwise-antisymmetric force conserves momentum to round-off: |p| << sum m |v|
   double scale = 0.0;
   const Particles& p = w.particles();

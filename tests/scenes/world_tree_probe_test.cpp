@@ -1,4 +1,4 @@
-// World::tree_cells, the tree overlay's data: the walk of one particle of a scene with tree gravity
+// Report::tree_cells, the tree overlay's data: the walk of one particle of a scene with tree gravity
 // covers all the mass, follows gravity.theta (a smaller theta opens more cells), and is empty for a
 // scene without the tree or a particle out of range.
 #include <gtest/gtest.h>
@@ -20,11 +20,11 @@ TEST(WorldTreeProbe, ThePickedParticlesWalkFollowsTheta) {
   RunConfig cfg = RunConfig::from_scene("dust_sphere");
   cfg.set("scene.n", "2000", "test");
   World w(cfg);
-  const auto coarse = w.tree_cells(5);
+  const auto coarse = w.report().tree_cells(5);
   ASSERT_FALSE(coarse.empty());
   EXPECT_GT(whole(coarse), 0u);
   EXPECT_LT(coarse.size(), 2000u);  // far fewer terms than particles
-  const Snapshot s = w.snapshot();
+  const Snapshot s = w.report().snapshot();
   // the probed particle lies in one of its own leaves (the walk always opens the cells around it)
   bool inside = false;
   for (const TreeCell& c : coarse)
@@ -35,16 +35,16 @@ TEST(WorldTreeProbe, ThePickedParticlesWalkFollowsTheta) {
   Params fine = w.params();
   fine.gravity.theta = 0.3;
   w.set_params(fine);
-  EXPECT_GT(w.tree_cells(5).size(), coarse.size());
+  EXPECT_GT(w.report().tree_cells(5).size(), coarse.size());
 }
 
 TEST(WorldTreeProbe, EmptyWithoutTheTreeOrOutOfRange) {
   RunConfig cfg = RunConfig::from_scene("dust_sphere");
   cfg.set("scene.n", "500", "test");
-  EXPECT_TRUE(World(cfg).tree_cells(500).empty());
+  EXPECT_TRUE(World(cfg).report().tree_cells(500).empty());
   cfg.set("physics.gravity", "direct", "test");
-  EXPECT_TRUE(World(cfg).tree_cells(0).empty());
-  EXPECT_TRUE(World(RunConfig::from_scene("sod")).tree_cells(0).empty());
+  EXPECT_TRUE(World(cfg).report().tree_cells(0).empty());
+  EXPECT_TRUE(World(RunConfig::from_scene("sod")).report().tree_cells(0).empty());
 }
 
 }  // namespace

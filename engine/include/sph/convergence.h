@@ -29,7 +29,7 @@ struct ConvergenceRun {
   std::int64_t steps = 0;
   std::size_t particles = 0;  ///< real particles at the end
   bool valid = true;          ///< the reference still applied at t (Reference::valid_until)
-  std::size_t warnings = 0;   ///< kinds of warning the run raised (World::warnings)
+  std::size_t warnings = 0;   ///< kinds of warning the run raised (RunChecks::warnings)
 };
 
 struct ConvergenceResult {

@@ -1,4 +1,4 @@
-// One particle taken apart (World::inspect): its fields, its neighbours with their kernel weights, and
+// One particle taken apart (Report::inspect): its fields, its neighbours with their kernel weights, and
 // the terms of its momentum and energy equations for the scene's formulation, re-evaluated at the
 // current state with the engine's own stages. Enough to answer "why did this particle heat up?".
 // Plain values: the engine fills it, a viewer shows it; nothing here refers to a GUI.

@@ -1,4 +1,4 @@
-// What a run tolerated without stopping (World::warnings), shared by the World, the stepper's frames,
+// What a run tolerated without stopping (RunChecks::warnings), shared by the World, the stepper's frames,
 // the headless summary and the GUI's status line.
 #pragma once
 #include <cstdint>

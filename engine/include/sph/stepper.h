@@ -68,7 +68,7 @@ struct StepperFrame {
   std::vector<std::pair<int, int>> ref_series;  ///< measured/exact column pairs plotted together
   std::vector<std::string> stages; ///< the stages the World runs, in pipeline order
   DensityStats density;            ///< last density solve
-  std::vector<RunWarning> warnings;  ///< what this World's run has tolerated so far (World::warnings)
+  std::vector<RunWarning> warnings;  ///< what this World's run has tolerated so far (RunChecks::warnings)
   RunConfig config;                ///< scene, adopted params and scene values of this World
   std::uint64_t params_version = 0;///< the last mailbox version adopted (0 = none yet)
   std::vector<HistorySample> history;  ///< this World's diagnostics against time (decimated, <= 2048)
@@ -89,7 +89,7 @@ struct StepperFrame {
 
   bool comparing = false;          ///< `compare` holds run B of an A/B comparison
   CompareFrame compare;
-  /// World::inspect of the particle asked for (Stepper::set_inspect); while running refreshed at most 4
+  /// Report::inspect of the particle asked for (Stepper::set_inspect); while running refreshed at most 4
   /// times a second and within a tenth of the engine's time (its `step` says which state it explains),
   /// at every new state otherwise.
   std::optional<Inspection> inspection;
@@ -140,7 +140,7 @@ class Stepper {
   /// keeps its overrides). An override the scene refuses leaves everything as it was and reports the
   /// error. Empty: the comparison stops (the first World runs on).
   void set_compare(const std::vector<std::string>& overrides);
-  /// Frames carry World::inspect(id) (and run B's, when comparing); id < 0: none.
+  /// Frames carry Report::inspect(id) (and run B's, when comparing); id < 0: none.
   void set_inspect(std::int64_t id);
   /// Writes the World's whole state to `path` (a checkpoint, as `sph run --checkpoint-every` writes:
   /// `sph resume` and load_state read it); the frame's notice or error says how it went.

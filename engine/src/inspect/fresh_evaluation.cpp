@@ -13,7 +13,7 @@ constexpr double kReach = 1.2;
 Vec3 acceleration(const Particles& p, std::size_t i) { return {p.a[0][i], p.a[1][i], p.a[2][i]}; }
 double energy_rate(const Particles& p, std::size_t i) { return p.has(Field::EnergyRate) ? p[Field::EnergyRate][i] : 0.0; }
 
-/// Ghosts and lists for the copy's current h (what World::prepare_neighbours does without Verlet lists).
+/// Ghosts and lists for the copy's current h (what NeighbourCache::prepare does without Verlet lists).
 void prepare(FreshEvaluation& e, const Kernel& K, const Domain& d, FieldSet start_shared) {
   Particles& p = e.p;
   const std::size_t n = p.size();

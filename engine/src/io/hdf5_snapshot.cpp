@@ -59,8 +59,8 @@ void write_sandbox(hid_t file, const World& world, const ExportBox& box, double 
   h5::write_attr_ints(g.get(), "boundaries", bc, H5T_STD_I32LE);
   h5::write_attr(g.get(), "coordinate_shift", std::vector<double>(box.shift.begin(), box.shift.end()));
   h5::write_attr(g.get(), "smoothing_length_factor", h_factor);
-  h5::write_attr(g.get(), "spacing", world.spacing());
-  h5::write_attr(g.get(), "wall_strength", world.wall_strength());
+  h5::write_attr(g.get(), "spacing", world.report().spacing());
+  h5::write_attr(g.get(), "wall_strength", world.report().wall_strength());
   h5::write_attr(g.get(), "step", static_cast<double>(world.steps()));
 }
 
@@ -84,7 +84,7 @@ std::string hdf5_snapshot(const World& world, IcFormat format) {
 
   h5::Handle file = h5::create_memory_file();
   write_header(file.get(), world, box, format, nbody ? 1 : 0, n);
-  write_units(file.get(), world.scene().units);
+  write_units(file.get(), world.config().scene->units);
   {
     h5::Handle hydro = h5::create_group(file.get(), "HydroScheme");
     h5::write_attr(hydro.get(), "Adiabatic index", world.params().gas.gamma);

@@ -64,7 +64,7 @@ void physics_warnings(const World& world, IcFormat f, std::vector<std::string>* 
 /// What both parameter files start from: the scene's parameters, units, kernel and its mapping, box.
 struct Target {
   Target(const World& world, IcFormat f, std::vector<std::string>* w)
-      : prm(world.params()), u(world.scene().units), dim(world.particles().dim()), nbody(is_nbody(prm)),
+      : prm(world.params()), u(world.config().scene->units), dim(world.particles().dim()), nbody(is_nbody(prm)),
         kernel(prm.kernel.type, dim), km(kernel_mapping(prm.kernel.type, dim, f)), box(export_box(world)) {
     if (!nbody && !km.exact) w->push_back("kernel.type = " + std::string(to_string(prm.kernel.type)) + ": " + km.note);
   }
@@ -99,7 +99,7 @@ std::string swift_file(const World& world, const std::string& ic_file, std::vect
     else w->push_back("gas.gamma = " + num(g) + ": SWIFT compiles only 5/3, 7/5, 4/3 or 2 (--with-adiabatic-index)");
   }
   const double dt_out = prm.time.dt_out > 0.0 ? prm.time.dt_out : prm.time.t_end;
-  std::string s = "# SWIFT parameter file for " + ic_file + ", written by `sph export-ics " + world.scene().name +
+  std::string s = "# SWIFT parameter file for " + ic_file + ", written by `sph export-ics " + world.config().scene->name +
                   " --format swift`.\n# Build SWIFT with:\n#   " + configure + "\n# Run: swift " +
                   (nbody ? "--self-gravity" : std::string("--hydro") +
                                                   (prm.physics.gravity != GravityType::None ? " --self-gravity" : "")) +
@@ -109,7 +109,7 @@ std::string swift_file(const World& world, const std::string& ic_file, std::vect
        "\n  UnitCurrent_in_cgs:  1\n  UnitTemp_in_cgs:     1\n\n";
   s += "TimeIntegration:\n  time_begin: " + num(world.time()) + "\n  time_end:   " + num(prm.time.t_end) +
        "\n  dt_min:     " + num(prm.time.t_end * 1e-10) + "\n  dt_max:     " + num(dt_out) + "\n\n";
-  s += "Snapshots:\n  basename:   " + world.scene().name + "\n  time_first: " + num(world.time()) +
+  s += "Snapshots:\n  basename:   " + world.config().scene->name + "\n  time_first: " + num(world.time()) +
        "\n  delta_time: " + num(dt_out) + "\n\nStatistics:\n  delta_time: " + num(dt_out / 10.0) + "\n\n";
   if (!nbody) {
     // the same support radius in units of the particle spacing: H = support eta dx = gamma_K eta_swift dx
@@ -124,7 +124,7 @@ std::string swift_file(const World& world, const std::string& ic_file, std::vect
     s += "\n";
   }
   if (prm.physics.gravity != GravityType::None) {
-    const double eps = prm.gravity.eps > 0.0 ? prm.gravity.eps : world.spacing() * 0.1;
+    const double eps = prm.gravity.eps > 0.0 ? prm.gravity.eps : world.report().spacing() * 0.1;
     s += "Gravity:\n  eta:      0.025\n  MAC:      geometric\n  theta_cr: " + num(prm.gravity.theta) +
          "\n  max_physical_DM_softening:     " + num(eps) + "\n  max_physical_baryon_softening: " + num(eps) +
          "\n  comoving_DM_softening:         " + num(eps) + "\n  comoving_baryon_softening:     " + num(eps) +
@@ -135,10 +135,9 @@ std::string swift_file(const World& world, const std::string& ic_file, std::vect
   return s;
 }
 
-std::string gadget4_file(const World& world, const std::string& ic_file, std::vector<std::string>* w) {
-  const Target t(world, IcFormat::Gadget4, w);
+/// GADGET-4's Config.sh options for the target, one a line (a warning when a periodic box is not a cube).
+std::string gadget4_config(const Target& t, std::vector<std::string>* w) {
   const Params& prm = t.prm;
-  const UnitSystem& u = t.u;
   const int dim = t.dim;
   const bool nbody = t.nbody;
   const KernelMapping& km = t.km;
@@ -159,7 +158,17 @@ std::string gadget4_file(const World& world, const std::string& ic_file, std::ve
     else config += "GAMMA=" + num(prm.gas.gamma) + "\n";
   }
   config += "DOUBLEPRECISION=1\nIDS_64BIT\n";
-  std::string s = "% GADGET-4 parameter file for " + ic_file + ", written by `sph export-ics " + world.scene().name +
+  return config;
+}
+
+std::string gadget4_file(const World& world, const std::string& ic_file, std::vector<std::string>* w) {
+  const Target t(world, IcFormat::Gadget4, w);
+  const Params& prm = t.prm;
+  const UnitSystem& u = t.u;
+  const int dim = t.dim;
+  const ExportBox& box = t.box;
+  const std::string config = gadget4_config(t, w);
+  std::string s = "% GADGET-4 parameter file for " + ic_file + ", written by `sph export-ics " + world.config().scene->name +
                   " --format gadget4`.\n% Compile GADGET-4 with these Config.sh options:\n";
   for (std::size_t a = 0, b; a < config.size(); a = b + 1) {
     b = config.find('\n', a);
@@ -216,7 +225,7 @@ std::string gadget4_file(const World& world, const std::string& ic_file, std::ve
   line("UnitMass_in_g", num(u.mass_cgs));
   line("UnitVelocity_in_cm_per_s", num(u.length_cgs / u.time_cgs));
   line("GravityConstantInternal", num(prm.gravity.G));
-  const double eps = prm.gravity.eps > 0.0 ? prm.gravity.eps : std::max(world.spacing() * 0.1, 1e-6);
+  const double eps = prm.gravity.eps > 0.0 ? prm.gravity.eps : std::max(world.report().spacing() * 0.1, 1e-6);
   line("SofteningComovingClass0", num(eps));
   line("SofteningMaxPhysClass0", num(eps));
   for (int t = 0; t < 6; ++t) line("SofteningClassOfPartType" + std::to_string(t), "0");

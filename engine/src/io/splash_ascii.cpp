@@ -18,7 +18,7 @@ std::string splash_ascii_file(const World& world) {
   const bool walls = p.fluid() < p.size();
 
   char buf[64];
-  std::string out = "# sph-sandbox particles for SPLASH: scene " + world.scene().name + ", step " +
+  std::string out = "# sph-sandbox particles for SPLASH: scene " + world.config().scene->name + ", step " +
                     std::to_string(world.steps()) + ", " + std::to_string(p.size()) + " particles\n";
   std::snprintf(buf, sizeof buf, "# %.16e\n", world.time());  // always has a '.': SPLASH's time
   out += buf;

@@ -19,12 +19,12 @@ namespace {
 struct EnergyDrift {
   double e0 = 0.0, scale = 1.0;
   explicit EnergyDrift(const World& w) {
-    const Diagnostics d = w.diagnostics();
+    const Diagnostics d = w.report().diagnostics();
     e0 = d.E_tot;
     scale = std::abs(d.E_kin) + std::abs(d.E_int) + std::abs(d.E_pot);
     if (!(scale > 0.0)) scale = 1.0;
   }
-  double operator()(const World& w) const { return std::abs(w.diagnostics().E_tot - e0) / scale; }
+  double operator()(const World& w) const { return std::abs(w.report().diagnostics().E_tot - e0) / scale; }
 };
 
 /// Total variation of v_x along x over the fluid particles [velocity]: sum |v_x(k+1) - v_x(k)| in x order.
@@ -61,7 +61,7 @@ std::string metric_names(const RunConfig& cfg, const std::string& metric, bool* 
   World w(cfg);
   std::string names;
   *known = false;
-  for (const RefColumn& c : w.reference_columns()) {
+  for (const RefColumn& c : w.report().reference_columns()) {
     names += " " + c.name;
     *known = *known || c.name == metric;
   }
@@ -69,7 +69,7 @@ std::string metric_names(const RunConfig& cfg, const std::string& metric, bool* 
     names += " " + m;
     *known = *known || m == metric;
   }
-  if (metric == "tv_vx" && w.scene().dim != 1) *known = false;  // a profile along x: 1D scenes only
+  if (metric == "tv_vx" && w.config().scene->dim != 1) *known = false;  // a profile along x: 1D scenes only
   return names;
 }
 
@@ -91,7 +91,7 @@ double measure(const RunConfig& base, const std::string& metric, const std::stri
   cfg.params.time.t_end = t_end;
   World w(cfg);
   bool known = false;
-  for (const RefColumn& c : w.reference_columns()) known = known || c.name == metric;
+  for (const RefColumn& c : w.report().reference_columns()) known = known || c.name == metric;
   const bool extra = metric == "E_drift" || metric == "tv_vx";
   if (!known && !extra) throw LessonError("scene " + cfg.scene->name + " has no metric '" + metric + "'");
   w.evaluate();
@@ -99,7 +99,7 @@ double measure(const RunConfig& base, const std::string& metric, const std::stri
   const auto value = [&] {
     if (metric == "E_drift") return drift(w);
     if (metric == "tv_vx") return total_variation_vx(w);
-    return w.reference_value(metric);
+    return w.report().reference_value(metric);
   };
   double first = 0.0, second = 0.0, largest = 0.0;  // max |value| over the halves and the run
   while (w.time() < t_end) {

@@ -59,11 +59,11 @@ void CompareRun::sample() {
 
 void CompareRun::fill(CompareFrame& f) const {
   f.overrides = overrides_;
-  f.snapshot = world_->snapshot();
-  f.diagnostics = world_->diagnostics();
-  f.ref_values = world_->reference_values();
+  f.snapshot = world_->report().snapshot();
+  f.diagnostics = world_->report().diagnostics();
+  f.ref_values = world_->report().reference_values();
   f.history = history_.samples();
-  f.warnings = world_->warnings();
+  f.warnings = world_->checks().warnings();
   f.config = world_->config();
 }
 

@@ -209,7 +209,7 @@ void EngineLoop::rebuild(const RunConfig& cfg, const std::string* state, const s
 void EngineLoop::check_loaded_state() {
   // a state saved from a diverged run (the divergence dialog offers that) is shown as diverged at once
   try {
-    world_->check_state();
+    RunChecks::check_finite(world_->particles(), world_->steps(), world_->time());
   } catch (const DivergedError& e) {
     diverged_particle_ = e.particle;
     diverged_step_ = e.step;
@@ -322,20 +322,20 @@ void EngineLoop::publish(int record_index) {
   f.serial = ++serial_;
   f.world_serial = world_serial_;
   if (world_) {
-    f.snapshot = world_->snapshot();
+    f.snapshot = world_->report().snapshot();
     if (tree_probe_ >= 0) {
-      f.snapshot.tree_cells = world_->tree_cells(static_cast<std::size_t>(tree_probe_));
+      f.snapshot.tree_cells = world_->report().tree_cells(static_cast<std::size_t>(tree_probe_));
       if (!f.snapshot.tree_cells.empty()) f.snapshot.tree_probe = tree_probe_;
     }
-    f.diagnostics = world_->diagnostics();
-    f.has_reference = world_->has_reference();
-    f.ref_columns = world_->reference_columns();
-    f.ref_values = world_->reference_values();
-    f.ref_primary = world_->reference() ? world_->reference()->primary() : -1;
-    f.ref_series = world_->reference() ? world_->reference()->series() : std::vector<std::pair<int, int>>{};
-    f.stages = world_->stage_names();
-    f.density = world_->density_stats();
-    f.warnings = world_->warnings();
+    f.diagnostics = world_->report().diagnostics();
+    f.has_reference = world_->report().has_reference();
+    f.ref_columns = world_->report().reference_columns();
+    f.ref_values = world_->report().reference_values();
+    f.ref_primary = world_->report().reference() ? world_->report().reference()->primary() : -1;
+    f.ref_series = world_->report().reference() ? world_->report().reference()->series() : std::vector<std::pair<int, int>>{};
+    f.stages = world_->report().stage_names();
+    f.density = world_->report().density_stats();
+    f.warnings = world_->checks().warnings();
     f.config = world_->config();
     f.push = world_->push();
     f.pushes = world_->pushes();

@@ -5,7 +5,7 @@
 namespace sph::detail {
 
 HistorySample history_sample(const World& w) {
-  const Diagnostics d = w.diagnostics();
+  const Diagnostics d = w.report().diagnostics();
   HistorySample s;
   s.t = d.t;
   s.E_kin = d.E_kin;
@@ -13,7 +13,7 @@ HistorySample history_sample(const World& w) {
   s.E_pot = d.E_pot;
   s.E_tot = d.E_tot;
   s.P = std::sqrt(d.P[0] * d.P[0] + d.P[1] * d.P[1] + d.P[2] * d.P[2]);
-  s.ref = w.reference_values();
+  s.ref = w.report().reference_values();
   return s;
 }
 

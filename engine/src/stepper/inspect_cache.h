@@ -1,4 +1,4 @@
-// The inspection frames carry (StepperFrame::inspection): World::inspect costs about one evaluation (1.7
+// The inspection frames carry (StepperFrame::inspection): Report::inspect costs about one evaluation (1.7
 // steps of box_random at 20k particles, 0.18 s), so while the run steps it is refreshed at most every
 // kInspectEvery seconds and so that it takes at most a tenth of the engine's time; a paused run is
 // inspected once per state.
@@ -34,7 +34,7 @@ class InspectCache {
     const bool due = !running || !mine || since >= std::max(kInspectEvery, 9.0 * cost_);
     if (!same && due) {
       try {
-        value_ = w->inspect(id_);
+        value_ = w->report().inspect(id_);
       } catch (const std::exception&) {  // an h solve that cannot finish on the copy: nothing to show
         value_.reset();
       }

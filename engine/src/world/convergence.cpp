@@ -37,10 +37,10 @@ ConvergenceStudy resolve_study(const RunConfig& base, const ConvergenceStudy& as
   RunConfig probe = base;
   probe.set(s.key, format(s.values.front()), "--key " + s.key);
   World w(probe);
-  const auto& cols = w.reference_columns();
+  const auto& cols = w.report().reference_columns();
   if (s.column.empty() && s.key == d.key) s.column = d.column;
   if (s.column.empty()) {
-    const int k = w.reference()->primary();
+    const int k = w.report().reference()->primary();
     s.column = cols.at(static_cast<std::size_t>(k)).name;
   } else if (find_column(cols, s.column) < 0) {
     std::string known;
@@ -68,20 +68,20 @@ ConvergenceResult run_convergence(const RunConfig& base, const ConvergenceStudy&
     while (w.time() < study.t) w.step(study.t - w.time());
     ConvergenceRun run;
     run.value = value;
-    run.h = study.key == "time.dt" ? value : w.spacing();  // a timestep study converges in dt
-    run.error = w.reference_value(study.column);
+    run.h = study.key == "time.dt" ? value : w.report().spacing();  // a timestep study converges in dt
+    run.error = w.report().reference_value(study.column);
     run.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     run.steps = w.steps();
     run.particles = w.particles().fluid();
-    run.valid = study.t <= w.reference()->valid_until() * (1.0 + 1e-12);
-    run.warnings = w.warnings().size();
+    run.valid = study.t <= w.report().reference()->valid_until() * (1.0 + 1e-12);
+    run.warnings = w.checks().warnings().size();
     run.order = std::numeric_limits<double>::quiet_NaN();
     if (!r.runs.empty()) {
       const ConvergenceRun& prev = r.runs.back();
       run.order = std::log(prev.error / run.error) / std::log(prev.h / run.h);
     }
     if (r.column_description.empty())
-      for (const RefColumn& c : w.reference_columns())
+      for (const RefColumn& c : w.report().reference_columns())
         if (c.name == study.column) r.column_description = c.description;
     r.runs.push_back(run);
     if (progress) progress(run);

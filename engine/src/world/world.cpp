@@ -10,7 +10,6 @@
 
 #include "core/parallel.h"
 #include "core/pipeline.h"
-#include "core/spatial_order.h"
 #include "core/stage.h"
 #include "core/team_size.h"
 
@@ -29,20 +28,6 @@ double since(std::chrono::steady_clock::time_point t0) {
 }
 
 }  // namespace
-
-DivergedError::DivergedError(std::int64_t particle_, std::int64_t step_, double t_, const std::string& field_)
-    : std::runtime_error(particle_ >= 0 ? "simulation diverged: particle " + std::to_string(particle_) +
-                                              " has a non-finite " + field_ + " at step " + std::to_string(step_) +
-                                              " (t = " + std::to_string(t_) + ")"
-                                        : "simulation diverged: " + field_ + " at step " + std::to_string(step_) +
-                                              " (t = " + std::to_string(t_) + ")"),
-      particle(particle_), step(step_), t(t_), field(field_) {}
-
-DivergedError::DivergedError(std::int64_t particle_, std::int64_t step_, double t_, const std::string& field_,
-                             const std::string& reason)
-    : std::runtime_error("simulation diverged: " + reason + " at step " + std::to_string(step_) +
-                         " (t = " + std::to_string(t_) + ")"),
-      particle(particle_), step(step_), t(t_), field(field_) {}
 
 World::World(const RunConfig& cfg)
     : cfg_(cfg), kernel_(cfg.params.kernel.type, cfg.scene->dim), stats_(std::make_unique<EvalStats>()),
@@ -88,92 +73,11 @@ World::World(const RunConfig& cfg)
                             std::to_string(eta()) + "): change kernel.eta, or raise h.max_iter");
   current_ = true;
   reorder();
-  crossings_ = WallCrossings{};  // storage indices changed; a start is placed inside its walls
-  check_finite();
+  checks_.forget_crossings();  // storage indices changed; a start is placed inside its walls
+  RunChecks::check_finite(p_, step_, t_);
 }
 
 World::~World() = default;
-
-double World::eta() const { return cfg_.params.kernel.eta > 0.0 ? cfg_.params.kernel.eta : kernel_.default_eta(); }
-const DensityStats& World::density_stats() const { return stats_->density; }
-std::size_t World::correction_fallbacks() const { return stats_->correction_fallbacks; }
-
-std::vector<std::string> World::stage_names() const {
-  std::vector<std::string> out;
-  for (const auto& s : pipeline_->stages()) out.emplace_back(s->name());
-  return out;
-}
-
-std::size_t World::neighbour_pairs() const { return nl_.pairs(); }
-
-void World::adopt(Particles&& fresh) {
-  p_ = std::move(fresh);
-  p_.add_fields(pipeline_->fields());
-  apply_boundaries(domain_, p_);
-  integrator_->reset();  // its history was per particle
-  nl_ = NeighbourList{};
-  exact_ = NeighbourList{};
-  for (auto& xb : x_built_) xb.clear();
-  h_limit_.clear();
-  lists_valid_ = false;
-  rates_known_ = false;
-  t_last_eval_ = -1.0;
-  by_id_.clear();
-  reorder();
-}
-
-void World::reorder() {
-  // Morton order over cells of the kernel's support at the largest h: a cell's neighbours are mostly
-  // in the cells next to it on the curve. Walls never move: sorted once, then the order is kept.
-  const std::size_t nf = p_.fluid(), n = p_.size();
-  const auto& h = p_[Field::H];
-  double hmax = 0.0;
-  for (std::size_t i = 0; i < n; ++i) hmax = std::max(hmax, h[i]);
-  double cell = kernel_.support() * hmax;
-  if (cell <= 0.0) {  // point masses (h = 0): cells of 1/1024 of the extent
-    double extent = 0.0;
-    for (int k = 0; k < p_.dim(); ++k) {
-      const auto [lo, hi] = std::minmax_element(p_.x[k].begin(), p_.x[k].begin() + static_cast<std::ptrdiff_t>(nf));
-      if (nf > 0) extent = std::max(extent, *hi - *lo);
-    }
-    cell = extent / 1024.0;
-  }
-  std::vector<std::uint32_t> order = morton_order(p_, 0, nf, cell);
-  if (by_id_.empty()) {
-    const std::vector<std::uint32_t> walls = morton_order(p_, nf, n, cell);
-    order.insert(order.end(), walls.begin(), walls.end());
-  } else {
-    for (std::size_t i = nf; i < n; ++i) order.push_back(static_cast<std::uint32_t>(i));
-  }
-  p_.permute(order);
-  integrator_->permute(order);
-  permute_neighbours(nl_, order);  // the lists stay valid for the current state
-  permute_neighbours(exact_, order);
-  for (auto& xb : x_built_)
-    if (xb.size() == n) {
-      const std::vector<double> old = xb;
-      for (std::size_t k = 0; k < n; ++k) xb[k] = old[order[k]];
-    }
-  if (h_limit_.size() == n) {
-    const std::vector<double> old = h_limit_;
-    for (std::size_t k = 0; k < n; ++k) h_limit_[k] = old[order[k]];
-  }
-  by_id_.resize(n);
-  for (std::size_t i = 0; i < n; ++i) by_id_[i] = static_cast<std::uint32_t>(i);
-  std::sort(by_id_.begin(), by_id_.end(), [&](std::uint32_t a, std::uint32_t b) { return p_.id[a] < p_.id[b]; });
-}
-
-void World::reset_timings() {
-  timings_.assign(1, StageTiming{"neighbours", 0.0, 0});
-  for (const auto& s : pipeline_->stages()) timings_.push_back(StageTiming{std::string(s->name()), 0.0, 0});
-}
-
-StageContext World::context() const {
-  // Stages get the particles mutable; const callers (potentials, limits) only read them.
-  const NeighbourList& lists = pipeline_->exact_lists() ? exact_ : nl_;
-  return StageContext{cfg_.params, kernel_, domain_, const_cast<Particles&>(p_), lists, h_limit_,
-                      eta(), spacing_, wall_strength_, *stats_, since_};
-}
 
 void World::set_params(const Params& p) {
   const Params old = cfg_.params;
@@ -191,54 +95,11 @@ void World::set_params(const Params& p) {
   if (p.time.integrator != old.time.integrator) integrator_ = make_integrator(p.time.integrator);
   current_ = false;  // rates depend on the parameters: re-evaluate before the next step
   rates_known_ = false;
-  lists_valid_ = false;  // the kernel, h or the boundaries may have changed
-  t_last_eval_ = -1.0;   // rates of other parameters make no first guess
+  lists_.invalidate();  // the kernel, h or the boundaries may have changed
+  t_last_eval_ = -1.0;  // rates of other parameters make no first guess
   // new parameters may change dt and the energies legitimately (e.g. gravity switched on): the blow-up
   // guards measure from the next step on
-  dt_first_ = 0.0;
-  energy_scale_ = -1.0;
-}
-
-void World::evaluate(double t_eval) {
-  since_ = t_last_eval_ >= 0.0 && t_eval >= t_last_eval_ ? t_eval - t_last_eval_ : 0.0;
-  bound();
-  const std::size_t n = p_.size();
-  StageContext ctx = context();
-  if (timings_.size() != pipeline_->stages().size() + 1) reset_timings();
-  struct Rewrap {  // the wrapped coordinates come back however the stages end
-    World& w;
-    ~Rewrap() { w.rewrap(); }
-  } rewrap_after{*this};
-  for (int attempt = 0;; ++attempt) {
-    auto t0 = std::chrono::steady_clock::now();
-    if (pipeline_->uses_neighbours()) prepare_neighbours();  // pure N-body: no lists at all
-    timings_[0].seconds += since(t0);
-    ++timings_[0].calls;
-    if (!pipeline_->sets_acceleration())
-      for (int k = 0; k < 3; ++k) std::fill(p_.a[k].begin(), p_.a[k].begin() + static_cast<std::ptrdiff_t>(n), 0.0);
-    bool complete = true;
-    std::size_t k = 1;
-    for (const auto& stage : pipeline_->stages()) {
-      t0 = std::chrono::steady_clock::now();
-      const bool done = stage->run(ctx);
-      if (done) copy_ghost_fields(p_, stage->shares());
-      timings_[k].seconds += since(t0);
-      ++timings_[k++].calls;
-      if (!done) { complete = false; break; }
-    }
-    rewrap();
-    if (complete) {
-      add_push_acceleration(push_, domain_, p_);  // a body force of its own, after the stages' accelerations
-      break;
-    }
-    lists_valid_ = false;  // an h outgrew its list: new lists from the new h
-    ++h_overflows_;
-    if (attempt > 20)
-      throw DivergedError(-1, step_, t_, "h", "the smoothing length outgrows its neighbour lists on every rebuild");
-  }
-  ++evaluations_;
-  t_last_eval_ = t_eval;
-  rates_known_ = true;
+  checks_.restart_guards();
 }
 
 void World::set_push(const Push& push) {
@@ -247,34 +108,7 @@ void World::set_push(const Push& push) {
   push_ = next;
   pushes_.push_back(PushEvent{step_, push_});
   current_ = false;  // the rates of the current state change with the push
-  dt_first_ = 0.0;
-  energy_scale_ = -1.0;
-}
-
-double World::next_dt() {
-  if (cfg_.params.time.dt > 0.0) return cfg_.params.time.dt;
-  // The last evaluation's rates set dt (for RK4 and the predictor-corrector that is a stage within the
-  // last step): evaluating again just for dt would double their cost.
-  if (!rates_known_) { evaluate(); current_ = true; }
-  const StageContext ctx = context();
-  double dt = Stage::kNoLimit;
-  for (const auto& s : pipeline_->stages()) dt = std::min(dt, s->dt_limit(ctx));
-  const std::size_t n = p_.fluid();
-  const auto& h = p_[Field::H];
-  double dt_force = Stage::kNoLimit, dt_move = Stage::kNoLimit;  // minima: the same for any thread count
-#pragma omp parallel for reduction(min : dt_force, dt_move) if (n >= kParallelMin)
-  for (std::size_t i = 0; i < n; ++i) {
-    const double a = std::sqrt(p_.a[0][i] * p_.a[0][i] + p_.a[1][i] * p_.a[1][i] + p_.a[2][i] * p_.a[2][i]);
-    if (h[i] <= 0.0) continue;  // point masses (N-body): their stages give the limits
-    if (a > 0.0) dt_force = std::min(dt_force, std::sqrt(h[i] / a));  // force condition
-    const double v = p_.vel(i).norm();
-    if (v > 0.0) dt_move = std::min(dt_move, h[i] / v);
-  }
-  dt = std::min(dt, dt_force);
-  if (push_.active()) dt = std::min(dt, push_.tau);  // relaxation towards v_push, resolved in time
-  // Without forces or signal speeds (free streaming), no particle moves more than h in a step.
-  if (dt == Stage::kNoLimit) dt = dt_move;
-  return cfg_.params.time.cfl * dt;
+  checks_.restart_guards();
 }
 
 PhaseSpace World::phase_space() {
@@ -305,24 +139,7 @@ void World::advance(double dt_max) {
   if (step_ > 0 && step_ % kReorderEvery == 0) reorder();
   const double dt_free = next_dt();
   double dt = std::min(dt_free, dt_max);
-  if (!(dt > 0.0) || !std::isfinite(dt)) {
-    const std::int64_t id = fastest_particle();
-    throw DivergedError(id, step_, t_, "dt", "no finite timestep (particle " + std::to_string(id) + " has the largest acceleration)");
-  }
-  // A blow-up that stays finite (velocities of 1e10, E_kin of 1e21) shows as a collapsing adaptive dt:
-  // the run would crawl forever. A millionth of the first step's dt is far below any physical change.
-  if (cfg_.params.time.dt <= 0.0) {
-    if (dt_first_ <= 0.0) dt_first_ = dt_free;
-    if (dt_free < 1e-6 * dt_first_) {
-      const std::int64_t id = fastest_particle();
-      char what[220];
-      std::snprintf(what, sizeof what,
-                    "the timestep collapsed to %.3g (the first step took %.3g; particle %lld has the largest "
-                    "acceleration): the run is unstable",
-                    dt_free, dt_first_, static_cast<long long>(id));
-      throw DivergedError(id, step_, t_, "dt", what);
-    }
-  }
+  checks_.check_dt(dt, dt_free, cfg_.params.time.dt <= 0.0, p_, step_, t_);
   PhaseSpace s = phase_space();
   const double t0 = t_;
   current_ = integrator_->step(s, [this, t0](double offset) { evaluate(t0 + offset); }, dt, current_);
@@ -331,11 +148,23 @@ void World::advance(double dt_max) {
   dt_last_ = dt;
   ++step_;
   after_step();
-  check_finite();
-  check_walls();
-  check_h_solve();
-  check_energy();
-  check_reference();
+  check_step();
+}
+
+void World::check_step() {
+  RunChecks::check_finite(p_, step_, t_);
+  checks_.check_walls(p_, cfg_.params, step_, t_);
+  checks_.check_h_solve(stats_->density, step_, t_);
+  checks_.check_energy(cfg_, [this] { return report().diagnostics(); }, p_, step_, t_);
+  checks_.check_reference(reference_.get(), step_, t_);
+}
+
+void World::bound() { checks_.tally(apply_boundaries(domain_, p_)); }
+
+Report World::report() const {
+  return Report(Report::Inputs{cfg_, kernel_, p_, by_id_, domain_, *pipeline_, *stats_, lists_, reference_.get(),
+                               ref_columns_, timings_, push_, eta(), spacing_, wall_strength_, since_, t_, dt_last_,
+                               step_, evaluations_});
 }
 
 void World::after_step() {
@@ -349,7 +178,7 @@ void World::after_step() {
       s->after_step(ctx);
       copy_ghost_fields(p_, s->shares());
     }
-  rewrap();
+  lists_.rewrap(p_);
   for (const auto& s : pipeline_->stages()) {
     Particles fresh;
     if (s->acts_after(cfg_.params, step_) && s->take_resampled(fresh)) adopt(std::move(fresh));

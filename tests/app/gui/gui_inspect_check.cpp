@@ -1,6 +1,6 @@
 // Checks the particle inspector's numbers that sph-gui printed at exit (its report of the state it
 // showed, see smoke.cmake's "ab" mode) against the engine API: the same scene stepped as the GUI's
-// stepper steps it (to t_end, the last step shortened to land on it), World::inspect of the same id.
+// stepper steps it (to t_end, the last step shortened to land on it), Report::inspect of the same id.
 // Also checks that the particle lies behind Sod's shock (between the contact and the shock of the exact
 // solution). Usage: gui_inspect_check REPORT SCENE T_END  (REPORT: sph-gui's stdout).
 #include <cmath>
@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
   cfg.params.time.t_end = t_end;
   sph::World w(cfg);
   while (w.time() < t_end * (1.0 - 1e-12)) w.step(t_end - w.time());  // as the stepper does
-  const auto in = w.inspect(id);
+  const auto in = w.report().inspect(id);
   if (!in) {
     std::fprintf(stderr, "no particle %lld\n", id);
     return 1;

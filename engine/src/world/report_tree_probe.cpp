@@ -1,18 +1,19 @@
-// The tree overlay: the cells of one particle's Barnes-Hut walk, as self-gravity's tree stage would take
-// them now (same build, opening angle, guard and softening), for a viewer to draw.
+// Report::tree_cells, the tree overlay: the cells of one particle's Barnes-Hut walk, as self-gravity's
+// tree stage would take them now (same build, opening angle, guard and softening), for a viewer to draw.
 #include <optional>
 
 #include "gravity/barnes_hut.h"
-#include "sph/world.h"
+#include "sph/neighbour_cache.h"
+#include "sph/report.h"
 
 namespace sph {
 
-std::vector<TreeCell> World::tree_cells(std::size_t k) const {
+std::vector<TreeCell> Report::tree_cells(std::size_t k) const {
   std::vector<TreeCell> cells;
-  const Params& prm = cfg_.params;
-  if (prm.physics.gravity != GravityType::Tree || k >= by_id_.size()) return cells;
-  const std::size_t i = by_id_[k];
-  const gravity::Sources s = gravity::Sources::of(p_);
+  const Params& prm = in_.cfg.params;
+  if (prm.physics.gravity != GravityType::Tree || k >= in_.by_id.size()) return cells;
+  const std::size_t i = in_.by_id[k];
+  const gravity::Sources s = gravity::Sources::of(in_.p);
   if (i >= s.n) return cells;  // a wall particle: not in the tree
   gravity::PairLaw law;
   law.kind = prm.gravity.softening;

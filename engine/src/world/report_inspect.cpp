@@ -1,11 +1,13 @@
-// The particle inspector: one particle's fields, neighbours and equation terms, from a re-evaluation of
-// the current state on a copy (inspect/fresh_evaluation.h) split term by term (inspect/force_terms.h).
+// Report::inspect, the particle inspector: one particle's fields, neighbours and equation terms, from a
+// re-evaluation of the current state on a copy (inspect/fresh_evaluation.h) split term by term
+// (inspect/force_terms.h).
 #include <algorithm>
 #include <cmath>
 
 #include "inspect/force_terms.h"
 #include "inspect/fresh_evaluation.h"
-#include "sph/world.h"
+#include "sph/neighbour_cache.h"
+#include "sph/report.h"
 
 namespace sph {
 namespace {
@@ -14,36 +16,36 @@ double field_or_nan(const Particles& p, Field f, std::size_t i) { return p.has(f
 
 }  // namespace
 
-std::optional<Inspection> World::inspect(std::int64_t id) const {
-  const auto it = std::lower_bound(by_id_.begin(), by_id_.end(), id,
-                                   [&](std::uint32_t k, std::int64_t want) { return p_.id[k] < want; });
-  if (it == by_id_.end() || p_.id[*it] != id) return std::nullopt;
+std::optional<Inspection> Report::inspect(std::int64_t id) const {
+  const auto it = std::lower_bound(in_.by_id.begin(), in_.by_id.end(), id,
+                                   [&](std::uint32_t k, std::int64_t want) { return in_.p.id[k] < want; });
+  if (it == in_.by_id.end() || in_.p.id[*it] != id) return std::nullopt;
   const std::size_t i = *it;
   Inspection out;
   out.id = id;
-  out.step = step_;
-  out.t = t_;
-  out.wall = p_.is_wall(i);
-  out.x = p_.pos(i);
-  out.v = p_.vel(i);
+  out.step = in_.step;
+  out.t = in_.t;
+  out.wall = in_.p.is_wall(i);
+  out.x = in_.p.pos(i);
+  out.v = in_.p.vel(i);
   out.speed = out.v.norm();
-  out.m = p_[Field::Mass][i];
-  out.h = p_[Field::H][i];
-  out.rho = field_or_nan(p_, Field::Density, i);
-  out.P = field_or_nan(p_, Field::Pressure, i);
-  out.u = field_or_nan(p_, Field::Energy, i);
-  out.omega = field_or_nan(p_, Field::Omega, i);
-  out.c = field_or_nan(p_, Field::SoundSpeed, i);
-  out.neighbours = field_or_nan(p_, Field::Neighbours, i);
-  out.h_iterations = field_or_nan(p_, Field::HIterations, i);
-  out.drhodt = field_or_nan(p_, Field::DensityRate, i);
-  out.a_stored = {p_.a[0][i], p_.a[1][i], p_.a[2][i]};
-  out.has_energy = p_.has(Field::EnergyRate);
-  out.dudt_stored = out.has_energy ? p_[Field::EnergyRate][i] : 0.0;
+  out.m = in_.p[Field::Mass][i];
+  out.h = in_.p[Field::H][i];
+  out.rho = field_or_nan(in_.p, Field::Density, i);
+  out.P = field_or_nan(in_.p, Field::Pressure, i);
+  out.u = field_or_nan(in_.p, Field::Energy, i);
+  out.omega = field_or_nan(in_.p, Field::Omega, i);
+  out.c = field_or_nan(in_.p, Field::SoundSpeed, i);
+  out.neighbours = field_or_nan(in_.p, Field::Neighbours, i);
+  out.h_iterations = field_or_nan(in_.p, Field::HIterations, i);
+  out.drhodt = field_or_nan(in_.p, Field::DensityRate, i);
+  out.a_stored = {in_.p.a[0][i], in_.p.a[1][i], in_.p.a[2][i]};
+  out.has_energy = in_.p.has(Field::EnergyRate);
+  out.dudt_stored = out.has_energy ? in_.p[Field::EnergyRate][i] : 0.0;
   if (out.wall) return out;  // walls do not move: no equations to take apart
 
-  const FreshInputs in{cfg_.params, kernel_, domain_, eta(), spacing_, wall_strength_};
-  FreshEvaluation e = evaluate_fresh(in, p_, i);
+  const FreshInputs in{in_.cfg.params, in_.kernel, in_.domain, in_.eta, in_.spacing, in_.wall_strength};
+  FreshEvaluation e = evaluate_fresh(in, in_.p, i);
   const StageContext ctx = fresh_context(in, e);
   out.formulation = force_terms(ctx, i, &out.terms, &out.neighbour_list);
   // After the force stage (which sets the accelerations), every stage that adds to the rates is a term
@@ -62,8 +64,8 @@ std::optional<Inspection> World::inspect(std::int64_t id) const {
     t.dudt_scale = std::abs(d.dudt);
     out.terms.push_back(std::move(t));
   }
-  if (push_.active()) {  // the user's push: added after the stages (World::evaluate)
-    const Vec3 a = push_acceleration(push_, domain_, p_.dim(), e.p.pos(i), e.p.vel(i));
+  if (in_.push.active()) {  // the user's push: added after the stages (World::evaluate)
+    const Vec3 a = push_acceleration(in_.push, in_.domain, in_.p.dim(), e.p.pos(i), e.p.vel(i));
     e.p.a[0][i] += a.x;
     e.p.a[1][i] += a.y;
     e.p.a[2][i] += a.z;

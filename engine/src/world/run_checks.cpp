@@ -1,49 +1,49 @@
-// The checks after each step that keep a run from going bad silently: non-finite state (stop), a
-// finite blow-up of the energy (stop), particles escaping through walls (stop) or crossing them
-// (warn), energy drift beyond the scene's bound (warn), an h solve that did not converge (warn), and a
-// run past the time its reference applies to (warn).
+// RunChecks: the checks after each step that keep a run from going bad silently: non-finite state
+// (stop), a collapsing timestep or a finite blow-up of the energy (stop), particles escaping through
+// walls (stop) or crossing them (warn), energy drift beyond the scene's bound (warn), an h solve that
+// did not converge (warn), and a run past the time its reference applies to (warn).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 
 #include "core/parallel.h"
-#include "core/stage.h"
-#include "sph/world.h"
+#include "sph/reference.h"
+#include "sph/run_checks.h"
 
 namespace sph {
 
-void World::bound() {
-  const WallCrossings w = apply_boundaries(domain_, p_);
+void RunChecks::tally(const WallCrossings& w) {
   crossings_.reflected += w.reflected;
   crossings_.escaped += w.escaped;
   crossings_.first_reflected = std::min(crossings_.first_reflected, w.first_reflected);
   crossings_.first_escaped = std::min(crossings_.first_escaped, w.first_escaped);
 }
 
-void World::warn(const std::string& kind, std::int64_t particle, const std::string& message, bool latest) {
+void RunChecks::warn(const std::string& kind, std::int64_t particle, const std::string& message, std::int64_t step,
+                     double t, bool latest) {
   for (RunWarning& w : warnings_)
     if (w.kind == kind) {
       ++w.times;
       if (latest) w.message = message;
       return;
     }
-  warnings_.push_back({kind, message, step_, t_, particle, 1});
+  warnings_.push_back({kind, message, step, t, particle, 1});
 }
 
-std::int64_t World::fastest_particle() const {
-  const std::size_t n = p_.fluid();
+std::int64_t RunChecks::fastest_particle(const Particles& p) {
+  const std::size_t n = p.fluid();
   double best = -1.0;
   std::size_t k = 0;
   for (std::size_t i = 0; i < n; ++i) {  // serial: the first of equal maxima, NaN counted as largest
-    const double a = p_.a[0][i] * p_.a[0][i] + p_.a[1][i] * p_.a[1][i] + p_.a[2][i] * p_.a[2][i];
-    if (std::isnan(a)) return p_.id[i];
+    const double a = p.a[0][i] * p.a[0][i] + p.a[1][i] * p.a[1][i] + p.a[2][i] * p.a[2][i];
+    if (std::isnan(a)) return p.id[i];
     if (a > best) { best = a; k = i; }
   }
-  return n ? static_cast<std::int64_t>(p_.id[k]) : -1;
+  return n ? static_cast<std::int64_t>(p.id[k]) : -1;
 }
 
-void World::check_finite() const {
+void RunChecks::check_finite(const Particles& p, std::int64_t step, double t) {
   // Finite and within single precision: snapshots, the display and the float outputs hold the state as
   // floats, so a value beyond FLT_MAX (a Tait pressure of 1e40 Pa after a wild timestep, say) would show
   // as inf in a run that had not stopped.
@@ -54,63 +54,84 @@ void World::check_finite() const {
     for (std::size_t i = 0; i < n; ++i)
       if (!(std::abs(a[i]) <= kLargest)) first = std::min(first, i);
     if (first == n) return;
-    if (!std::isfinite(a[first])) throw DivergedError(p_.id[first], step_, t_, name);
+    if (!std::isfinite(a[first])) throw DivergedError(p.id[first], step, t, name);
     char what[200];
     std::snprintf(what, sizeof what, "particle %lld has %s = %.3g, beyond single precision (|value| > %.3g)",
-                  static_cast<long long>(p_.id[first]), name, a[first], kLargest);
-    throw DivergedError(p_.id[first], step_, t_, name, what);
+                  static_cast<long long>(p.id[first]), name, a[first], kLargest);
+    throw DivergedError(p.id[first], step, t, name, what);
   };
   const char* xn[3] = {"x", "y", "z"};
   const char* vn[3] = {"vx", "vy", "vz"};
-  for (int k = 0; k < p_.dim(); ++k) { bad(p_.x[k], p_.fluid(), xn[k]); bad(p_.v[k], p_.fluid(), vn[k]); }
+  for (int k = 0; k < p.dim(); ++k) { bad(p.x[k], p.fluid(), xn[k]); bad(p.v[k], p.fluid(), vn[k]); }
   // the sound speed too: a negative internal energy (an explicit step that overshoots a fast cooling)
   // leaves P finite but c = sqrt(gamma P/rho) NaN, which the display and the outputs would show
   for (Field f : {Field::Density, Field::H, Field::Energy, Field::Pressure, Field::SoundSpeed})
-    if (p_.has(f)) bad(p_[f], p_.size(), std::string(info(f).key).c_str());
+    if (p.has(f)) bad(p[f], p.size(), std::string(info(f).key).c_str());
 }
 
-void World::check_walls() {
+void RunChecks::check_dt(double dt, double dt_free, bool adaptive, const Particles& p, std::int64_t step, double t) {
+  if (!(dt > 0.0) || !std::isfinite(dt)) {
+    const std::int64_t id = fastest_particle(p);
+    throw DivergedError(id, step, t, "dt",
+                        "no finite timestep (particle " + std::to_string(id) + " has the largest acceleration)");
+  }
+  // A blow-up that stays finite (velocities of 1e10, E_kin of 1e21) shows as a collapsing adaptive dt:
+  // the run would crawl forever. A millionth of the first step's dt is far below any physical change.
+  if (!adaptive) return;
+  if (dt_first_ <= 0.0) dt_first_ = dt_free;
+  if (dt_free < 1e-6 * dt_first_) {
+    const std::int64_t id = fastest_particle(p);
+    char what[220];
+    std::snprintf(what, sizeof what,
+                  "the timestep collapsed to %.3g (the first step took %.3g; particle %lld has the largest "
+                  "acceleration): the run is unstable",
+                  dt_free, dt_first_, static_cast<long long>(id));
+    throw DivergedError(id, step, t, "dt", what);
+  }
+}
+
+void RunChecks::check_walls(const Particles& p, const Params& prm, std::int64_t step, double t) {
   const WallCrossings w = crossings_;
   crossings_ = WallCrossings{};
   char what[240];
   if (w.escaped > 0) {
-    const auto id = static_cast<long long>(p_.id[w.first_escaped]);
+    const auto id = static_cast<long long>(p.id[w.first_escaped]);
     std::snprintf(what, sizeof what,
                   "particle %lld went through a wall and out of the domain (%zu particles in all): the timestep is "
                   "far too long (time.cfl = %g, time.dt = %g)",
-                  id, w.escaped, cfg_.params.time.cfl, cfg_.params.time.dt);
-    throw DivergedError(id, step_, t_, "x", what);
+                  id, w.escaped, prm.time.cfl, prm.time.dt);
+    throw DivergedError(id, step, t, "x", what);
   }
   if (w.reflected > 0) {
-    const auto id = static_cast<long long>(p_.id[w.first_reflected]);
+    const auto id = static_cast<long long>(p.id[w.first_reflected]);
     std::snprintf(what, sizeof what,
                   "particle %lld crossed a wall and was reflected back (the mirror particles should have stopped it): "
                   "lower time.cfl (now %g)",
-                  id, cfg_.params.time.cfl);
-    warn("wall", id, what);
+                  id, prm.time.cfl);
+    warn("wall", id, what, step, t);
   }
 }
 
-void World::check_h_solve() {
-  const DensityStats& d = stats_->density;
+void RunChecks::check_h_solve(const DensityStats& d, std::int64_t step, double t) {
   if (d.not_converged == 0) return;
   char what[240];
   std::snprintf(what, sizeof what,
                 "the smoothing-length solve did not converge for %zu particles (the first is particle %lld): their "
                 "density is approximate; raise h.max_iter or change kernel.eta",
                 d.not_converged, static_cast<long long>(d.first_not_converged));
-  warn("h_solve", d.first_not_converged, what);
+  warn("h_solve", d.first_not_converged, what, step, t);
 }
 
-void World::check_energy() {
+void RunChecks::check_energy(const RunConfig& cfg, const std::function<Diagnostics()>& diagnostics, const Particles& p,
+                             std::int64_t step, double t) {
   // Every stage conserves or dissipates E_kin + E_int + E_pot (the corrected forms to truncation error),
   // so a total energy that grows by many times its initial scale is a blow-up that has not (yet) reached
   // inf or NaN. A scene that conserves energy is checked every step against its bound (a pass over the
   // particles); the others, and those with gravity (whose potential may need a tree walk of its own),
   // every 16 steps.
-  const double bound = cfg_.scene->energy_bound;
-  const bool every_step = bound > 0.0 && cfg_.params.physics.gravity == GravityType::None;
-  if (step_ % 16 != 0 && energy_scale_ >= 0.0 && !every_step) return;
+  const double bound = cfg.scene->energy_bound;
+  const bool every_step = bound > 0.0 && cfg.params.physics.gravity == GravityType::None;
+  if (step % 16 != 0 && energy_scale_ >= 0.0 && !every_step) return;
   const Diagnostics d = diagnostics();
   if (energy_scale_ < 0.0) {
     energy_scale_ = std::abs(d.E_kin) + std::abs(d.E_int) + std::abs(d.E_pot);
@@ -122,35 +143,35 @@ void World::check_energy() {
   const double fail = bound > 0.0 ? std::min(0.1, 100.0 * bound) : 10.0;
   char what[320];
   if (drift > fail) {
-    const std::int64_t id = fastest_particle();
+    const std::int64_t id = fastest_particle(p);
     std::snprintf(what, sizeof what,
                   "the total energy grew from %.4g to %.4g (by %.3g of its initial scale; E_kin = %.3g, v_max = %.3g; "
                   "particle %lld has the largest acceleration): the run is unstable",
                   energy0_, d.E_tot, drift, d.E_kin, d.v_max, static_cast<long long>(id));
-    throw DivergedError(id, step_, t_, "E_tot", what);
+    throw DivergedError(id, step, t, "E_tot", what);
   }
   if (bound > 0.0 && std::abs(drift) > bound && std::abs(drift) >= worst_drift_) {
     worst_drift_ = std::abs(drift);
-    const bool euler = cfg_.params.time.integrator == IntegratorType::Euler;
+    const bool euler = cfg.params.time.integrator == IntegratorType::Euler;
     std::snprintf(what, sizeof what,
                   "E_tot drifted by %.2g of its initial scale, beyond this scene's bound %.2g: %s", drift, bound,
                   euler ? "forward Euler is unstable for this problem (time.integrator: use leapfrog, "
                           "predictor_corrector or rk4)"
                         : "the result is degraded; lower time.cfl");
-    warn("energy", -1, what, true);  // the message keeps the largest drift so far
+    warn("energy", -1, what, step, t, true);  // the message keeps the largest drift so far
   }
 }
 
-void World::check_reference() {
-  if (!reference_) return;
-  const double until = reference_->valid_until();
-  if (!(t_ > until * (1.0 + 1e-12))) return;
+void RunChecks::check_reference(const Reference* ref, std::int64_t step, double t) {
+  if (!ref) return;
+  const double until = ref->valid_until();
+  if (!(t > until * (1.0 + 1e-12))) return;
   char what[240];
   std::snprintf(what, sizeof what,
                 "from t = %.4g waves have reached a boundary: the reference no longer applies (errors.csv marks those "
                 "rows valid = 0)",
                 until);
-  warn("reference", -1, what);
+  warn("reference", -1, what, step, t);
 }
 
 }  // namespace sph

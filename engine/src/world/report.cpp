@@ -1,22 +1,38 @@
-// What the world reports: conserved quantities (seed 000 eqs. 3.4.1–3.4.5), the reference's values and
+// Report: conserved quantities (seed 000 eqs. 3.4.1–3.4.5), the reference's values and
 // curves, and snapshots with the scene's active fields.
 #include <algorithm>
 #include <cmath>
 
 #include "core/pipeline.h"
 #include "core/stage.h"
-#include "sph/world.h"
+#include "sph/neighbour_cache.h"
+#include "sph/report.h"
 
 namespace sph {
 
-Diagnostics World::diagnostics() const {
+StageContext Report::context() const {
+  // as World hands the stages, for their energy sums (which only read the particles)
+  const NeighbourList& lists = in_.lists.lists(in_.pipeline.exact_lists());
+  return StageContext{in_.cfg.params, in_.kernel, in_.domain, const_cast<Particles&>(in_.p), lists, in_.lists.h_limit(),
+                      in_.eta, in_.spacing, in_.wall_strength, in_.stats, in_.since};
+}
+
+const DensityStats& Report::density_stats() const { return in_.stats.density; }
+
+std::vector<std::string> Report::stage_names() const {
+  std::vector<std::string> out;
+  for (const auto& s : in_.pipeline.stages()) out.emplace_back(s->name());
+  return out;
+}
+
+Diagnostics Report::diagnostics() const {
   Diagnostics d;
-  d.step = step_;
-  d.t = t_;
-  d.dt = dt_last_;
-  const auto& m = p_[Field::Mass];
-  for (std::size_t i = 0; i < p_.fluid(); ++i) {  // serial sums: identical for any thread count
-    const Vec3 r = p_.pos(i), v = p_.vel(i);
+  d.step = in_.step;
+  d.t = in_.t;
+  d.dt = in_.dt;
+  const auto& m = in_.p[Field::Mass];
+  for (std::size_t i = 0; i < in_.p.fluid(); ++i) {  // serial sums: identical for any thread count
+    const Vec3 r = in_.p.pos(i), v = in_.p.vel(i);
     d.E_kin += 0.5 * m[i] * v.norm2();
     const Vec3 L = r.cross(v * m[i]);
     d.P[0] += m[i] * v.x; d.P[1] += m[i] * v.y; d.P[2] += m[i] * v.z;
@@ -24,28 +40,28 @@ Diagnostics World::diagnostics() const {
     d.v_max = std::max(d.v_max, v.norm());
   }
   const StageContext ctx = context();
-  for (const auto& s : pipeline_->stages()) {
+  for (const auto& s : in_.pipeline.stages()) {
     d.E_int += s->internal_energy(ctx);
     d.E_pot += s->potential(ctx);
   }
   d.E_tot = d.E_kin + d.E_int + d.E_pot;
-  const DensityStats& ds = stats_->density;
+  const DensityStats& ds = in_.stats.density;
   d.h_iter_mean = ds.mean_iterations;
   d.h_iter_max = ds.max_iterations;
   d.h_not_converged = ds.not_converged;
   d.neighbours_mean = ds.mean_neighbours;
-  d.correction_fallbacks = stats_->correction_fallbacks;
+  d.correction_fallbacks = in_.stats.correction_fallbacks;
   return d;
 }
 
-std::vector<double> World::reference_values() const {
-  if (!reference_) return {};
-  return reference_->evaluate(p_, t_);
+std::vector<double> Report::reference_values() const {
+  if (!in_.reference) return {};
+  return in_.reference->evaluate(in_.p, in_.t);
 }
 
-double World::reference_value(const std::string& name) const {
-  const int k = find_column(ref_columns_, name);
-  if (k < 0) throw std::out_of_range("scene " + cfg_.scene->name + " has no reference value '" + name + "'");
+double Report::reference_value(const std::string& name) const {
+  const int k = find_column(in_.ref_columns, name);
+  if (k < 0) throw std::out_of_range("scene " + in_.cfg.scene->name + " has no reference value '" + name + "'");
   return reference_values()[static_cast<std::size_t>(k)];
 }
 
@@ -89,33 +105,33 @@ std::vector<double> vorticity(const Particles& p, const Kernel& K, const Neighbo
 
 }  // namespace
 
-Snapshot World::snapshot() const {
+Snapshot Report::snapshot() const {
   Snapshot s;
-  const std::size_t n = p_.size();
-  s.scene = cfg_.scene->name;
-  s.dim = p_.dim();
-  s.step = step_;
-  s.t = t_;
-  s.dt = dt_last_;
+  const std::size_t n = in_.p.size();
+  s.scene = in_.cfg.scene->name;
+  s.dim = in_.p.dim();
+  s.step = in_.step;
+  s.t = in_.t;
+  s.dt = in_.dt;
   s.count = n;
-  if (cfg_.params.physics.fpm != FpmType::None) s.points_label = "FPM points (u = v_x)";
-  // entries in id order (by_id_): a particle keeps its place in every snapshot whatever the storage order
+  if (in_.cfg.params.physics.fpm != FpmType::None) s.points_label = "FPM points (u = v_x)";
+  // entries in id order (in_.by_id): a particle keeps its place in every snapshot whatever the storage order
   s.x.resize(n); s.y.resize(n); s.z.resize(n); s.h.resize(n);
   for (std::size_t k = 0; k < n; ++k) {
-    const std::size_t i = by_id_[k];
-    s.x[k] = static_cast<float>(p_.x[0][i]);
-    s.y[k] = static_cast<float>(p_.x[1][i]);
-    s.z[k] = static_cast<float>(p_.x[2][i]);
-    s.h[k] = static_cast<float>(p_[Field::H][i]);
+    const std::size_t i = in_.by_id[k];
+    s.x[k] = static_cast<float>(in_.p.x[0][i]);
+    s.y[k] = static_cast<float>(in_.p.x[1][i]);
+    s.z[k] = static_cast<float>(in_.p.x[2][i]);
+    s.h[k] = static_cast<float>(in_.p[Field::H][i]);
   }
-  const bool walls = p_.fluid() < n;
+  const bool walls = in_.p.fluid() < n;
   if (walls) {
     s.kind.resize(n);
-    for (std::size_t k = 0; k < n; ++k) s.kind[k] = p_.kind[by_id_[k]];
+    for (std::size_t k = 0; k < n; ++k) s.kind[k] = in_.p.kind[in_.by_id[k]];
   }
   for (int k = 0; k < 3; ++k) {
-    s.bounds[2 * k] = static_cast<float>(domain_.lo[k]);
-    s.bounds[2 * k + 1] = static_cast<float>(domain_.hi[k]);
+    s.bounds[2 * k] = static_cast<float>(in_.domain.lo[k]);
+    s.bounds[2 * k + 1] = static_cast<float>(in_.domain.hi[k]);
   }
   auto add = [&](std::string name, std::string label, auto&& value) {
     SnapshotField f;
@@ -124,10 +140,10 @@ Snapshot World::snapshot() const {
     f.values.resize(n);
     bool first = true;
     for (std::size_t k = 0; k < n; ++k) {
-      const std::size_t i = by_id_[k];
+      const std::size_t i = in_.by_id[k];
       const float v = static_cast<float>(value(i));
       f.values[k] = v;
-      if (!std::isfinite(v) || p_.is_wall(i)) continue;  // the range is the fluid's
+      if (!std::isfinite(v) || in_.p.is_wall(i)) continue;  // the range is the fluid's
       if (first) { f.min = f.max = v; first = false; }
       f.min = std::min(f.min, v);
       f.max = std::max(f.max, v);
@@ -135,33 +151,34 @@ Snapshot World::snapshot() const {
     s.fields.push_back(std::move(f));
   };
   auto add_field = [&](Field fld) {
-    const auto& a = p_[fld];
+    const auto& a = in_.p[fld];
     add(std::string(info(fld).key), std::string(info(fld).label), [&](std::size_t i) { return a[i]; });
   };
   // the fields of earlier versions first, in their order; then the other display fields of the stages
   const Field first[] = {Field::Density, Field::Pressure, Field::Energy, Field::H, Field::SoundSpeed, Field::Neighbours,
                          Field::Omega};
   // point masses (pure N-body) have h = 0 everywhere: nothing to colour by, so h is left out
-  const bool point_masses = !p_.has(Field::Density) && std::all_of(p_[Field::H].begin(), p_[Field::H].begin() +
-                                                                   static_cast<std::ptrdiff_t>(n), [](double h) { return h == 0.0; });
+  const auto& hs = in_.p[Field::H];
+  const auto h_end = hs.begin() + static_cast<std::ptrdiff_t>(n);
+  const bool point_masses = !in_.p.has(Field::Density) && std::all_of(hs.begin(), h_end, [](double h) { return h == 0.0; });
   for (Field fld : first)
-    if (p_.has(fld) && !(fld == Field::H && point_masses)) add_field(fld);
+    if (in_.p.has(fld) && !(fld == Field::H && point_masses)) add_field(fld);
   for (std::size_t k = 0; k < kFieldCount; ++k) {
     const Field fld = static_cast<Field>(k);
-    if (p_.has(fld) && info(fld).display && std::find(std::begin(first), std::end(first), fld) == std::end(first))
+    if (in_.p.has(fld) && info(fld).display && std::find(std::begin(first), std::end(first), fld) == std::end(first))
       add_field(fld);
   }
-  add("speed", "speed |v|", [&](std::size_t i) { return p_.vel(i).norm(); });
-  if (s.dim == 1) add("vx", "velocity v_x", [&](std::size_t i) { return p_.v[0][i]; });
-  if (cfg_.params.physics.fpm != FpmType::None)  // Burgers' u first: what a viewer shows by default
+  add("speed", "speed |v|", [&](std::size_t i) { return in_.p.vel(i).norm(); });
+  if (s.dim == 1) add("vx", "velocity v_x", [&](std::size_t i) { return in_.p.v[0][i]; });
+  if (in_.cfg.params.physics.fpm != FpmType::None)  // Burgers' u first: what a viewer shows by default
     std::stable_partition(s.fields.begin(), s.fields.end(), [](const SnapshotField& f) { return f.name == "vx"; });
-  if (s.dim == 2 && p_.has(Field::Density)) {
-    const std::vector<double> w = vorticity(p_, kernel_, nl_, domain_);
+  if (s.dim == 2 && in_.p.has(Field::Density)) {
+    const std::vector<double> w = vorticity(in_.p, in_.kernel, in_.lists.lists(false), in_.domain);
     add("vorticity", "vorticity dv_y/dx - dv_x/dy", [&](std::size_t i) { return w[i]; });
   }
-  if (walls) add("kind", "particle kind (0 fluid, 1 wall)", [&](std::size_t i) { return double(p_.kind[i]); });
-  if (reference_) {
-    ReferenceCurves c = reference_->curves(domain_, t_);
+  if (walls) add("kind", "particle kind (0 fluid, 1 wall)", [&](std::size_t i) { return double(in_.p.kind[i]); });
+  if (in_.reference) {
+    ReferenceCurves c = in_.reference->curves(in_.domain, in_.t);
     s.exact = std::move(c.profiles);
     s.outlines = std::move(c.outlines);
   }

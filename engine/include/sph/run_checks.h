@@ -1,0 +1,74 @@
+// The checks after each step that keep a run from going bad silently, and the warnings they leave:
+// non-finite state, a collapsing timestep or a finite energy blow-up (stop), particles escaping
+// through walls (stop) or crossing them, energy drift, an h solve that did not converge, a run past
+// its reference (warn). Owned by World; read through World::checks().
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "sph/config.h"
+#include "sph/density.h"
+#include "sph/diagnostics.h"
+#include "sph/domain.h"
+#include "sph/diverged.h"
+#include "sph/run_warning.h"
+
+namespace sph {
+
+class ByteReader;
+class ByteWriter;
+class Reference;
+
+class RunChecks {
+ public:
+  /// What the run has tolerated so far (empty for a clean run), in the order first found.
+  const std::vector<RunWarning>& warnings() const { return warnings_; }
+
+  /// Throws DivergedError if a position, velocity, density, h, u, P or c of `p` is non-finite or beyond
+  /// single precision (at `step`, time t).
+  static void check_finite(const Particles& p, std::int64_t step, double t);
+  /// The id of the particle with the largest acceleration (lowest index among equals).
+  static std::int64_t fastest_particle(const Particles& p);
+
+  /// Adds wall crossings of one application of the boundaries (for check_walls()).
+  void tally(const WallCrossings& w);
+  /// Forgets the crossings tallied (storage indices changed).
+  void forget_crossings() { crossings_ = WallCrossings{}; }
+  /// The blow-up guards measure from the next step on (new parameters or a push may change dt and the
+  /// energies legitimately).
+  void restart_guards() { dt_first_ = 0.0; energy_scale_ = -1.0; }
+
+  /// Throws when the step's dt is not finite and positive, or when the adaptive dt (dt_free; checked
+  /// when `adaptive`) collapsed far below the first step's.
+  void check_dt(double dt, double dt_free, bool adaptive, const Particles& p, std::int64_t step, double t);
+  /// Throws when a particle escaped through a wall; warns when particles had to be reflected back.
+  void check_walls(const Particles& p, const Params& prm, std::int64_t step, double t);
+  /// Warns when the h solve did not converge for some particles.
+  void check_h_solve(const DensityStats& d, std::int64_t step, double t);
+  /// Throws DivergedError when E_tot has grown far beyond its initial scale (a finite blow-up); warns
+  /// when a scene that conserves energy drifts beyond its SceneSpec::energy_bound. `diagnostics` is
+  /// called only on the steps that check.
+  void check_energy(const RunConfig& cfg, const std::function<Diagnostics()>& diagnostics, const Particles& p,
+                    std::int64_t step, double t);
+  /// Warns when the run passes the time its reference applies to.
+  void check_reference(const Reference* ref, std::int64_t step, double t);
+
+  /// Checkpoint layout: the guards' scales, the crossings and the warnings (CheckpointError on a misfit).
+  void save(ByteWriter& w) const;
+  void restore(ByteReader& r);
+
+ private:
+  /// Adds a warning, or counts one more of its kind (and with `latest`, takes the new message).
+  void warn(const std::string& kind, std::int64_t particle, const std::string& message, std::int64_t step,
+            double t, bool latest = false);
+
+  double dt_first_ = 0.0;                        ///< the first adaptive dt (a collapse far below it is a blow-up)
+  double energy_scale_ = -1.0, energy0_ = 0.0;  ///< |E_kin| + |E_int| + |E_pot| and E_tot after step 1
+  double worst_drift_ = 0.0;                     ///< the largest energy drift warned about
+  WallCrossings crossings_;                      ///< since the last check_walls()
+  std::vector<RunWarning> warnings_;
+};
+
+}  // namespace sph
