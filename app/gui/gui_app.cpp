@@ -29,6 +29,7 @@
 #include "recorder.h"
 #include "unique_path.h"
 #include "sph/config.h"
+#include "sph/key_value.h"
 #include "sph/stepper.h"
 #include "overrides_text.h"
 #include "view_picking.h"
@@ -45,11 +46,7 @@ constexpr int kOk = 0, kNoDisplay = 1, kInvalidScene = 3, kIoError = 4, kBadLess
 
 RunConfig resolve(const GuiOptions& o) {
   RunConfig cfg = RunConfig::load(o.scene);
-  for (const std::string& kv : o.sets) {
-    const auto eq = kv.find('=');
-    if (eq == std::string::npos || eq == 0) throw ConfigError("--set " + kv + ": expected key=value");
-    cfg.set(kv.substr(0, eq), kv.substr(eq + 1), "--set " + kv);
-  }
+  for (const std::string& kv : o.sets) apply_key_value(cfg, "--set", kv);
   return cfg;
 }
 

@@ -1,6 +1,7 @@
 #include "cli_common.h"
 
 #include "exit_codes.h"
+#include "sph/key_value.h"
 #include "sph/world.h"
 #ifdef SPH_HAVE_FRAMES
 #include "frame_size.h"
@@ -38,11 +39,7 @@ std::vector<std::string> split_names(const std::string& text) {
 }
 
 void apply_sets(RunConfig& cfg, const std::vector<std::string>& sets) {
-  for (const auto& kv : sets) {
-    const auto eq = kv.find('=');
-    if (eq == std::string::npos || eq == 0) throw ConfigError("--set " + kv + ": expected key=value");
-    cfg.set(kv.substr(0, eq), kv.substr(eq + 1), "--set " + kv);
-  }
+  for (const auto& kv : sets) apply_key_value(cfg, "--set", kv);
 }
 
 bool make_output_dir(const std::filesystem::path& dir, bool* existed) {

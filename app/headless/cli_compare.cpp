@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "sph/compare.h"
+#include "sph/key_value.h"
 
 namespace sph::cli {
 
@@ -17,11 +18,7 @@ std::optional<CompareSetup> resolve_compare(const CompareOptions& opt, const Run
   if (c.b.scene->name != a.scene->name)
     throw ConfigError("--compare " + opt.scene + ": run B is scene " + c.b.scene->name + ", run A scene " +
                       a.scene->name + "; both runs must be the same scene (with other parameters)");
-  for (const std::string& kv : opt.sets) {
-    const auto eq = kv.find('=');
-    if (eq == std::string::npos || eq == 0) throw ConfigError("--compare-set " + kv + ": expected key=value");
-    c.b.set(kv.substr(0, eq), kv.substr(eq + 1), "--compare-set " + kv);
-  }
+  for (const std::string& kv : opt.sets) apply_key_value(c.b, "--compare-set", kv);
   if (until >= 0.0) c.b.params.time.t_end = until;
   c.b.validate();
   for (const std::string& d : differences(a, c.b))  // the end and output times say nothing about the runs

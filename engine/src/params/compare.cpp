@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "core/number_text.h"
+#include "sph/key_value.h"
 #include "sph/param_table.h"
 
 namespace sph {
@@ -31,9 +32,9 @@ std::string value_of(const RunConfig& cfg, const std::string& key) {
 RunConfig fork_config(const RunConfig& a, const std::vector<std::string>& overrides) {
   RunConfig b = a;
   for (const std::string& kv : overrides) {
-    const auto eq = kv.find('=');
-    if (eq == std::string::npos || eq == 0) throw ConfigError("compare: '" + kv + "': expected key=value");
-    b.set(kv.substr(0, eq), kv.substr(eq + 1), "compare " + kv);
+    const std::optional<KeyValue> split = split_key_value(kv);
+    if (!split) throw ConfigError("compare: '" + kv + "': expected key=value");
+    b.set(split->key, split->value, "compare " + kv);
   }
   b.validate();
   return b;
