@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "frame_size.h"
+#include "parse_command_line.h"
 
 namespace sph::gui {
 
@@ -67,14 +68,7 @@ int parse_options(int argc, char** argv, GuiOptions* out) {
       ->check(CLI::NonNegativeNumber);
   app.add_option("--config-dir", o.config_dir, "folder of recent.json (default $XDG_CONFIG_HOME/sph-sandbox or "
                                                "~/.config/sph-sandbox)");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    app.exit(e);
-    return 2;
-  }
+  if (const auto code = parse_command_line(app, argc, argv, 2)) return *code;
   if (!pace.empty()) o.auto_pace = pace == "on" ? 1 : 0;
   if (!size.empty() && !parse_size(size, &o.width, &o.height)) {
     std::fprintf(stderr, "sph-gui: --size %s: expected WIDTHxHEIGHT, e.g. 1600x900\n", size.c_str());

@@ -16,6 +16,7 @@
 #include "cli_run.h"
 #include "cli_suggest.h"
 #include "exit_codes.h"
+#include "parse_command_line.h"
 #include "number_checks.h"
 #include "sph/thread_wait.h"
 
@@ -149,14 +150,7 @@ int main(int argc, char** argv) {
   for (CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) sub->allow_extras();
 
   if (report_unknown_command(app, argc, argv)) return kUsage;
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    app.exit(e);
-    return kUsage;
-  }
+  if (const auto code = sph::parse_command_line(app, argc, argv, kUsage)) return *code;
   if (report_stray_arguments(app)) return kUsage;
   if (!opt.video.empty() && opt.frames.empty()) {  // frames beside the video: NAME_frames/
     const std::filesystem::path v(opt.video);
