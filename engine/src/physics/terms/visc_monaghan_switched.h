@@ -4,7 +4,7 @@
 //   Pi_ab = (-alpha_ab c_ab mu_ab + beta (alpha_ab / alpha_ref) mu_ab^2) / rho_ab,
 // alpha_ref = visc.alpha (Balsara) or visc.alpha_max (Cullen-Dehnen), so alpha_ab = alpha_ref gives the
 // constant-alpha Pi; the quadratic term scales with alpha as in Phantom and SPHENIX, where alpha
-// multiplies the whole signal velocity (Price et al. 2018, PASA 35, e031, eq. 35).
+// multiplies the whole signal velocity (Price et al. 2018, PASA 35, e031).
 #pragma once
 #include <algorithm>
 #include <cstdint>

@@ -15,7 +15,7 @@ inline double balsara_factor(double divv, double curl, double c, double h) {
 }
 
 /// Cullen & Dehnen (2010, MNRAS 408, 669) alpha, in the simplified form of Phantom (Price et al. 2018,
-/// PASA 35, e031, eqs. 39-42) with the time derivative of div v taken over the last interval as SWIFT's
+/// PASA 35, e031) with the time derivative of div v taken over the last interval as SWIFT's
 /// SPHENIX does (Borrow et al. 2022, MNRAS 511, 2367):
 ///   A = xi max(-d(div v)/dt, 0) in compression (div v < 0), 0 otherwise; xi = (div v)^2 / ((div v)^2 + |curl v|^2)
 ///   alpha_loc = alpha_max H^2 A / (H^2 A + c^2)
