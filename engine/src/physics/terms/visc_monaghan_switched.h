@@ -12,6 +12,7 @@
 
 #include "core/stage.h"
 #include "physics/pair_terms.h"
+#include "visc_monaghan.h"
 
 namespace sph::terms {
 
@@ -34,7 +35,7 @@ struct ViscMonaghanSwitched {
     const double a = 0.5 * (alpha[i] + alpha[j]);
     return pair::monaghan_pi_nb(vdotr, r2, hi, hj, rhoi, rhoj, ci, cj, a, beta_ref * a, eps);
   }
-  static double heat(double mj, double Pi, double w, double dWm) { return 0.5 * mj * Pi * w * dWm; }
+  static double heat(double mj, double Pi, double w, double dWm) { return ViscMonaghan::heat(mj, Pi, w, dWm); }
 };
 
 }  // namespace sph::terms
