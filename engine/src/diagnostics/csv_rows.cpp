@@ -1,8 +1,8 @@
 // Text rows of diagnostics.csv and errors.csv (full double precision).
 #include <cstdio>
 
-#include "core/number_text.h"
 #include "sph/diagnostics.h"
+#include "text/number_text.h"
 
 namespace sph {
 namespace {

@@ -8,9 +8,9 @@
 #include <limits>
 #include <numeric>
 
-#include "core/number_text.h"
 #include "lesson_metric.h"
 #include "sph/world.h"
+#include "text/number_text.h"
 
 namespace sph {
 namespace {

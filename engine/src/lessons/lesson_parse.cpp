@@ -7,10 +7,10 @@
 #include <set>
 #include <sstream>
 
-#include "core/number_text.h"
 #include "lesson_metric.h"
 #include "sph/lesson.h"
 #include "sph/lesson_check.h"
+#include "text/number_text.h"
 
 namespace sph {
 namespace {

@@ -2,9 +2,9 @@
 
 #include <cstdio>
 
-#include "core/number_text.h"
 #include "sph/key_value.h"
 #include "sph/param_table.h"
+#include "text/number_text.h"
 
 namespace sph {
 namespace {

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <memory>
 
-#include "core/number_text.h"
+#include "text/number_text.h"
 #include "core/pipeline.h"
 #include "sph/param_table.h"
 

@@ -1,6 +1,6 @@
 // The declaration of every run parameter (see sph/param_table.h).
 #include "sph/param_table.h"
-#include "core/number_text.h"
+#include "text/number_text.h"
 
 #include <array>
 #include <cmath>

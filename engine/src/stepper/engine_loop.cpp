@@ -1,5 +1,5 @@
 #include "engine_loop.h"
-#include "core/number_text.h"
+#include "text/number_text.h"
 
 #include <omp.h>
 

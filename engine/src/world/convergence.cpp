@@ -5,8 +5,8 @@
 #include <cstdio>
 #include <limits>
 
-#include "core/number_text.h"
 #include "sph/world.h"
+#include "text/number_text.h"
 
 namespace sph {
 namespace {
