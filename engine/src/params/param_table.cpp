@@ -1,114 +1,16 @@
-// The declaration of every run parameter (see sph/param_table.h).
+// The declaration of every run parameter (see sph/param_table.h), group by group in the table's order
+// (the order of `sph params`, the GUI and the scene assets); how one entry is made: params/param_entry.h.
 #include "sph/param_table.h"
-#include "text/number_text.h"
+#include "params/param_entry.h"
 
 #include <array>
 #include <cmath>
 #include <cstdlib>
-#include <sstream>
 
 namespace sph {
 namespace {
 
-std::string format(double v) { return exact_text(v); }
-
-using Active = std::function<bool(const Params&)>;
-
-struct Common {
-  std::string_view key, unit, what, alias = {};
-  struct Owner {
-    std::string_view stage = {};
-    Slot slot = Slot::Count;
-    Active active = nullptr;
-  } owner = {};
-  bool live = true;
-};
-
-ParamInfo base(const Common& c) {
-  ParamInfo p;
-  p.key = c.key;
-  p.group = c.key.substr(0, c.key.find('.'));
-  p.unit = c.unit;
-  p.description = c.what;
-  p.live = c.live;
-  p.alias = c.alias;
-  p.stage = c.owner.stage;
-  p.slot = c.owner.slot;
-  p.active = c.owner.active;
-  return p;
-}
-
-template <class Ref>
-ParamInfo real(const Common& c, Ref ref, double lo, double hi) {
-  ParamInfo p = base(c);
-  p.min = lo;
-  p.max = hi;
-  p.get = [ref](const Params& prm) { return format(ref(const_cast<Params&>(prm))); };
-  p.set = [ref, lo, hi, key = c.key](Params& prm, const std::string& text, std::string& err) {
-    double v = 0.0;
-    if (!parse_number(text, v)) { err = "'" + text + "' is not a number"; return false; }
-    if (v < lo || v > hi) {
-      err = std::string(key) + " = " + text + " is out of range [" + format(lo) + ", " + format(hi) + "]";
-      return false;
-    }
-    ref(prm) = v;
-    return true;
-  };
-  return p;
-}
-
-template <class Ref>
-ParamInfo integer(const Common& c, Ref ref, int lo, int hi) {
-  ParamInfo p = base(c);
-  p.integer = true;
-  p.min = lo;
-  p.max = hi;
-  p.get = [ref](const Params& prm) { return std::to_string(ref(const_cast<Params&>(prm))); };
-  p.set = [ref, lo, hi, key = c.key](Params& prm, const std::string& text, std::string& err) {
-    double v = 0.0;
-    if (!parse_number(text, v) || v != std::floor(v)) { err = "'" + text + "' is not an integer"; return false; }
-    if (v < lo || v > hi) {
-      err = std::string(key) + " = " + text + " is out of range [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
-      return false;
-    }
-    ref(prm) = static_cast<int>(v);
-    return true;
-  };
-  return p;
-}
-
-template <class E, class Ref>
-ParamInfo choice(const Common& c, Ref ref, std::vector<E> values) {
-  ParamInfo p = base(c);
-  for (E e : values) p.choices.emplace_back(to_string(e));
-  p.get = [ref](const Params& prm) { return std::string(to_string(ref(const_cast<Params&>(prm)))); };
-  p.set = [ref, key = c.key, names = p.choices](Params& prm, const std::string& text, std::string& err) {
-    E e{};
-    if (!parse(text, e)) {
-      err = std::string(key) + " = '" + text + "' is not one of:";
-      for (const auto& n : names) err += " " + n;
-      return false;
-    }
-    ref(prm) = e;
-    return true;
-  };
-  return p;
-}
-
-ParamInfo slot(const SlotInfo& s, std::string_view key, std::string_view alias) {
-  ParamInfo p = base({key, "choice", s.description, alias, {}, s.live});
-  p.choices = s.options;
-  p.slot = s.slot;
-  const Slot which = s.slot;
-  p.get = [which](const Params& prm) { return prm.physics.get(which); };
-  p.set = [which, key, names = p.choices](Params& prm, const std::string& text, std::string& err) {
-    if (prm.physics.set(which, text)) return true;
-    err = std::string(key) + " = '" + text + "' is not one of:";
-    for (const auto& n : names) err += " " + n;
-    return false;
-  };
-  return p;
-}
+using namespace param_entry;
 
 // Which stage a parameter belongs to: the words that name it in messages, its slot, and when it is used.
 using Owner = Common::Owner;
@@ -172,18 +74,19 @@ const Owner kCorrected{"the kernel corrections (corrected formulations, MLS dens
                                 (p.physics.density == DensityMode::Continuity && p.density.reinit_every > 0);
                        }};
 
-std::vector<ParamInfo> build() {
-  using K = KernelType;
-  using I = IntegratorType;
-  std::vector<ParamInfo> t;
-  // The slots first, in pipeline order; "h_mode" was the smoothing slot's flat key.
+/// The slots first, in pipeline order; "h_mode" was the smoothing slot's flat key.
+void add_slots(std::vector<ParamInfo>& t) {
   static std::array<std::string, kSlotCount> slot_keys;  // ParamInfo keeps views of them
   for (const SlotInfo& s : slot_table()) {
     std::string& key = slot_keys[static_cast<std::size_t>(s.slot)];
     key = "physics." + std::string(s.key);
     t.push_back(slot(s, key, s.slot == Slot::Smoothing ? "h_mode" : ""));
   }
+}
 
+/// The kernel, the density options and the smoothing-length solve.
+void add_kernel(std::vector<ParamInfo>& t) {
+  using K = KernelType;
   t.push_back(choice<K>({"kernel.type", "choice", "smoothing kernel W (seed 000 eqs. 3.2.6-3.2.9)", "kernel", kKernel},
                         [](Params& p) -> K& { return p.kernel.type; },
                         {K::M4, K::M5, K::M6, K::Gaussian, K::WendlandC2, K::WendlandC4}));
@@ -206,6 +109,10 @@ std::vector<ParamInfo> build() {
   t.push_back(integer({"h.max_iter", "iterations", "Newton-Raphson iteration cap per particle", "h_max_iter",
                        kVariableH, true},
                       [](Params& p) -> int& { return p.h.max_iter; }, 1, 1000));
+}
+
+/// The equations of state: ideal gas, isothermal, polytropic and Tait.
+void add_eos(std::vector<ParamInfo>& t) {
   t.push_back(real({"gas.gamma", "dimensionless",
                     "adiabatic index, P = (gamma-1) rho u (seed 000 eq. 3.3.23); polytropic: gamma = 1 + 1/n", "gamma",
                     kGammaOwner, false},
@@ -230,6 +137,10 @@ std::vector<ParamInfo> build() {
                     "floor of the Tait pressure: no more tension than this (water cavitates near -1e5 Pa gauge)", "",
                     kTait, true},
                    [](Params& p) -> double& { return p.liquid.p_min; }, -1e300, 1e12));
+}
+
+/// The artificial and physical viscosities and the viscosity switch.
+void add_viscosity(std::vector<ParamInfo>& t) {
   t.push_back(real({"visc.alpha", "dimensionless", "artificial viscosity, linear term (seed 003 eq. 3.16; seed 001 eq. 41)",
                     "alpha", kConstantAlpha, true},
                    [](Params& p) -> double& { return p.visc.alpha; }, 0.0, 10.0));
@@ -260,6 +171,10 @@ std::vector<ParamInfo> build() {
   t.push_back(real({"visc.nu", "length^2/time", "kinematic viscosity of the Laplacian viscosity (seed 004; Morris 1997)",
                     "", kLaplacian, true},
                    [](Params& p) -> double& { return p.visc.nu; }, 0.0, 1e6));
+}
+
+/// Conduction, XSPH and the body forces.
+void add_conduction_xsph_body(std::vector<ParamInfo>& t) {
   t.push_back(real({"conduction.alpha_u", "dimensionless", "artificial thermal conductivity (Price 2008)", "alpha_u",
                     kConduction, true},
                    [](Params& p) -> double& { return p.conduction.alpha_u; }, 0.0, 10.0));
@@ -273,6 +188,10 @@ std::vector<ParamInfo> build() {
                    [](Params& p) -> double& { return p.body.gy; }, -1e6, 1e6));
   t.push_back(real({"body.gz", "length/time^2", "uniform body force, z component", "", kBody, true},
                    [](Params& p) -> double& { return p.body.gz; }, -1e6, 1e6));
+}
+
+/// Self-gravity: G, softening and the Barnes-Hut tree.
+void add_gravity(std::vector<ParamInfo>& t) {
   t.push_back(real({"gravity.G", "length^3/(mass time^2)", "gravitational constant (4 pi^2 in AU, solar masses, years)",
                     "G", kGravity, true},
                    [](Params& p) -> double& { return p.gravity.G; }, 0.0, 1e12));
@@ -294,6 +213,10 @@ std::vector<ParamInfo> build() {
                     "below tol x |a| of the particle (so the error stays small where |a| is small); 0 = plain theta",
                     "tol", kTree, true},
                    [](Params& p) -> double& { return p.gravity.tol; }, 0.0, 0.1));
+}
+
+/// The finite pointset method, the Lennard-Jones walls and the kernel corrections.
+void add_fpm_walls_corrections(std::vector<ParamInfo>& t) {
   t.push_back(real({"fpm.alpha", "dimensionless", "MLS weight exp(-alpha r^2/h^2) (seed 002 eq. 9; the seed uses 8)",
                     "alpha", kFpm, true},
                    [](Params& p) -> double& { return p.fpm.alpha; }, 0.0, 20.0));
@@ -320,6 +243,11 @@ std::vector<ParamInfo> build() {
                     "below this reciprocal condition number a kernel or gradient correction falls back to order 0", "",
                     kCorrected, true},
                    [](Params& p) -> double& { return p.correction.min_rcond; }, 0.0, 1.0));
+}
+
+/// Time integration and output.
+void add_time(std::vector<ParamInfo>& t) {
+  using I = IntegratorType;
   t.push_back(choice<I>({"time.integrator", "choice", "time integrator (seed 000 App. A; seed 001 eqs. 56-59)",
                          "integrator"},
                         [](Params& p) -> I& { return p.time.integrator; },
@@ -333,6 +261,18 @@ std::vector<ParamInfo> build() {
                    [](Params& p) -> double& { return p.time.t_end; }, 0.0, 1e9));
   t.push_back(real({"time.dt_out", "time", "interval between particle outputs; 0 = end only", "dt_out"},
                    [](Params& p) -> double& { return p.time.dt_out; }, 0.0, 1e9));
+}
+
+std::vector<ParamInfo> build() {
+  std::vector<ParamInfo> t;
+  add_slots(t);
+  add_kernel(t);
+  add_eos(t);
+  add_viscosity(t);
+  add_conduction_xsph_body(t);
+  add_gravity(t);
+  add_fpm_walls_corrections(t);
+  add_time(t);
   return t;
 }
 
