@@ -3,6 +3,7 @@
 #include "sph/params.h"
 
 #include <stdexcept>
+#include <type_traits>
 
 namespace sph {
 namespace {
@@ -46,6 +47,28 @@ const Names<FpmType> kFpm{{{"none", FpmType::None}, {"burgers_viscous", FpmType:
 bool parse_toggle(std::string_view s, Toggle& t) {
   if (s == "off") { t = Toggle::Off; return true; }  // accepted as a synonym of none
   return kToggle.parse(s, t);
+}
+
+/// Calls f(names, member) with the option names of slot s and the member of ph that holds its choice;
+/// false for Slot::Count. (PhysicsT: Physics or const Physics.)
+template <class PhysicsT, class F>
+bool with_slot(PhysicsT& ph, Slot s, F&& f) {
+  switch (s) {
+    case Slot::Density: f(kDensity, ph.density); return true;
+    case Slot::Smoothing: f(kSmoothing, ph.smoothing); return true;
+    case Slot::Eos: f(kEos, ph.eos); return true;
+    case Slot::Force: f(kForce, ph.force); return true;
+    case Slot::Viscosity: f(kVisc, ph.viscosity); return true;
+    case Slot::Xsph: f(kToggle, ph.xsph); return true;
+    case Slot::Conduction: f(kToggle, ph.conduction); return true;
+    case Slot::Energy: f(kToggle, ph.energy); return true;
+    case Slot::BodyForce: f(kBody, ph.body_force); return true;
+    case Slot::Gravity: f(kGravity, ph.gravity); return true;
+    case Slot::Walls: f(kWalls, ph.walls); return true;
+    case Slot::Fpm: f(kFpm, ph.fpm); return true;
+    case Slot::Count: break;
+  }
+  return false;
 }
 
 }  // namespace
@@ -94,41 +117,18 @@ const std::array<SlotInfo, kSlotCount>& slot_table() {
 const SlotInfo& slot_info(Slot s) { return slot_table()[static_cast<std::size_t>(s)]; }
 
 std::string Physics::get(Slot s) const {
-  switch (s) {
-    case Slot::Density: return kDensity.name(density);
-    case Slot::Smoothing: return kSmoothing.name(smoothing);
-    case Slot::Eos: return kEos.name(eos);
-    case Slot::Force: return kForce.name(force);
-    case Slot::Viscosity: return kVisc.name(viscosity);
-    case Slot::Xsph: return kToggle.name(xsph);
-    case Slot::Conduction: return kToggle.name(conduction);
-    case Slot::Energy: return kToggle.name(energy);
-    case Slot::BodyForce: return kBody.name(body_force);
-    case Slot::Gravity: return kGravity.name(gravity);
-    case Slot::Walls: return kWalls.name(walls);
-    case Slot::Fpm: return kFpm.name(fpm);
-    case Slot::Count: break;
-  }
+  std::string name;
+  if (with_slot(*this, s, [&](const auto& names, const auto& value) { name = names.name(value); })) return name;
   throw std::logic_error("Physics::get: no such slot");
 }
 
 bool Physics::set(Slot s, std::string_view o) {
-  switch (s) {
-    case Slot::Density: return kDensity.parse(o, density);
-    case Slot::Smoothing: return kSmoothing.parse(o, smoothing);
-    case Slot::Eos: return kEos.parse(o, eos);
-    case Slot::Force: return kForce.parse(o, force);
-    case Slot::Viscosity: return kVisc.parse(o, viscosity);
-    case Slot::Xsph: return parse_toggle(o, xsph);
-    case Slot::Conduction: return parse_toggle(o, conduction);
-    case Slot::Energy: return parse_toggle(o, energy);
-    case Slot::BodyForce: return kBody.parse(o, body_force);
-    case Slot::Gravity: return kGravity.parse(o, gravity);
-    case Slot::Walls: return kWalls.parse(o, walls);
-    case Slot::Fpm: return kFpm.parse(o, fpm);
-    case Slot::Count: break;
-  }
-  return false;
+  bool ok = false;
+  with_slot(*this, s, [&](const auto& names, auto& value) {
+    if constexpr (std::is_same_v<std::remove_cvref_t<decltype(value)>, Toggle>) ok = parse_toggle(o, value);
+    else ok = names.parse(o, value);
+  });
+  return ok;
 }
 
 std::string Physics::validate() const {
