@@ -1,3 +1,5 @@
+// The engine thread's loop (stepper/engine_loop.h): drains the inbox, applies commands, adopts posted
+// params and rebuilds the World; stepping is in engine_loop_step.cpp, publishing in engine_loop_publish.cpp.
 #include "engine_loop.h"
 #include "text/number_text.h"
 
@@ -18,11 +20,7 @@
 namespace sph::detail {
 namespace {
 
-constexpr double kStaleAfter = 0.25;  ///< publish even if the last frame is unread after this long [s]
-constexpr double kMaxLag = 0.25;      ///< real-time pacing forgets a backlog longer than this [s]
-
-/// t has reached target (up to rounding of a sum of steps).
-bool reached(double t, double target) { return t >= target - 1e-12 * std::max(1.0, std::abs(target)); }
+constexpr double kMaxLag = 0.25;  ///< real-time pacing forgets a backlog longer than this [s]
 
 std::string format(double v) { return exact_text(v); }
 
@@ -220,62 +218,6 @@ void EngineLoop::check_loaded_state() {
   }
 }
 
-void EngineLoop::step() {
-  const double t = world_->time();
-  const double t_end = world_->params().time.t_end;
-  const bool end_ahead = stop_at_end_ && !reached(t, t_end);
-  double dt_max = end_ahead ? t_end - t : 1e300;
-  try {
-    // Frames land exactly on t0 + k every when they are at least a step apart; with steps longer than
-    // the interval, shortening every step to it cost the run its speed (box_perturbed: 9.8 steps/s), so
-    // the frame is then the first step at or past its time. (next_dt may evaluate the rates, which can
-    // diverge: inside the try. The soak test found it outside, where a divergence ended the program.)
-    if (record_every_ > 0.0 && record_every_ >= world_->next_dt())
-      dt_max = std::min(dt_max, record_t0_ + record_next_ * record_every_ - t);
-    world_->step(dt_max);
-  } catch (const DivergedError& e) {
-    diverged_particle_ = e.particle;
-    diverged_step_ = e.step;
-    error_ = e.what();
-    diverged_ = true;
-  } catch (const std::exception& e) {  // anything else: stop the same way, the message says what
-    error_ = std::string("step failed: ") + e.what();
-    diverged_ = true;
-  }
-  if (!diverged_ && !compare_.advance_to(world_->time(), &error_)) diverged_ = true;  // run B to the same time
-  if (diverged_) {
-    running_ = false;
-    single_steps_ = 0;
-    meter_.zero();
-    publish();
-    return;
-  }
-  meter_.tick();
-  if (history_.due(world_->steps())) sample_history();
-
-  bool force = false;
-  if (single_steps_ > 0) {
-    --single_steps_;
-    force = true;
-  }
-  int record = -1;
-  // the latest frame time reached (a long step may pass several)
-  while (record_every_ > 0.0 && reached(world_->time(), record_t0_ + record_next_ * record_every_)) record = record_next_++;
-  if (end_ahead && reached(world_->time(), t_end)) {
-    running_ = false;
-    at_end_ = true;
-    single_steps_ = 0;
-    force = true;
-  }
-  const double since = std::chrono::duration<double>(Clock::now() - last_publish_).count();
-  if (record >= 0) {
-    publish(record);
-    record_held_ = true;
-  } else if (force || (since >= options_.publish_interval && (!out_.unread() || since >= kStaleAfter))) {
-    publish();
-  }
-}
-
 void EngineLoop::start_compare(const std::vector<std::string>& overrides) {
   if (overrides.empty()) {
     compare_.stop();
@@ -296,90 +238,6 @@ void EngineLoop::start_compare(const std::vector<std::string>& overrides) {
   compare_.stop();
   rebuild(a);  // A restarts from t = 0 ...
   if (world_ && compare_.start(world_->config(), overrides, &error_)) compare_.sample();  // ... and B beside it
-}
-
-void EngineLoop::start_recording(double every) {
-  record_every_ = (every > 0.0 && std::isfinite(every)) ? every : 0.0;
-  if (record_every_ > 0.0 && world_) {
-    record_t0_ = world_->time();
-    record_next_ = 1;
-    emit_record_ = 0;  // the current state is frame 0
-  }
-}
-
-void EngineLoop::sample_history() {
-  history_.add(history_sample(*world_));
-  compare_.sample();  // at the same time: both histories decimate alike
-}
-
-void EngineLoop::anchor_pacing() {
-  pace_wall_ = Clock::now();
-  pace_t_ = world_ ? world_->time() : 0.0;
-}
-
-void EngineLoop::publish(int record_index) {
-  StepperFrame& f = out_.back();
-  f.serial = ++serial_;
-  f.world_serial = world_serial_;
-  if (world_) {
-    f.snapshot = world_->report().snapshot();
-    if (tree_probe_ >= 0) {
-      f.snapshot.tree_cells = world_->report().tree_cells(static_cast<std::size_t>(tree_probe_));
-      if (!f.snapshot.tree_cells.empty()) f.snapshot.tree_probe = tree_probe_;
-    }
-    f.diagnostics = world_->report().diagnostics();
-    f.has_reference = world_->report().has_reference();
-    f.ref_columns = world_->report().reference_columns();
-    f.ref_values = world_->report().reference_values();
-    f.ref_primary = world_->report().reference() ? world_->report().reference()->primary() : -1;
-    f.ref_series = world_->report().reference() ? world_->report().reference()->series() : std::vector<std::pair<int, int>>{};
-    f.stages = world_->report().stage_names();
-    f.density = world_->report().density_stats();
-    f.warnings = world_->checks().warnings();
-    f.config = world_->config();
-    f.push = world_->push();
-    f.pushes = world_->pushes();
-  } else {
-    f.snapshot = Snapshot{};
-    f.diagnostics = Diagnostics{};
-    f.has_reference = false;
-    f.ref_columns.clear();
-    f.ref_values.clear();
-    f.ref_primary = -1;
-    f.ref_series.clear();
-    f.stages.clear();
-    f.density = DensityStats{};
-    f.warnings.clear();
-    f.config = cfg_;
-    f.push = Push{};
-    f.pushes.clear();
-  }
-  f.params_version = adopted_;
-  f.history = history_.samples();
-  f.running = stepping() && running_;
-  f.at_end = at_end_;
-  f.real_time_factor = rtf_;
-  f.steps_per_second = meter_.rate();
-  f.particle_steps_per_second = meter_.rate() * static_cast<double>(f.snapshot.count);
-  f.diverged = diverged_;
-  f.diverged_particle = diverged_particle_;
-  f.diverged_step = diverged_step_;
-  f.error = error_;
-  f.notice = notice_;
-  f.record_every = record_every_;
-  f.record_index = record_index;
-  const bool run = stepping() && running_;
-  f.inspection = inspect_.refresh(world_.get(), world_serial_, adopted_, run);
-  f.comparing = compare_.on();
-  if (f.comparing) {
-    compare_.fill(f.compare);
-    f.compare.inspection = inspect_b_.refresh(compare_.world(), world_serial_, adopted_, run);
-  } else {
-    f.compare = CompareFrame{};
-  }
-  out_.publish();
-  published_.store(serial_, std::memory_order_release);
-  last_publish_ = Clock::now();
 }
 
 }  // namespace sph::detail

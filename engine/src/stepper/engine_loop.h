@@ -2,8 +2,10 @@
 // (paced to a real-time factor if asked), and publishes frames into the triple buffer. Owns the World;
 // nothing here is touched by another thread except through the Inbox and the TripleBuffer.
 #pragma once
+#include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 
@@ -29,6 +31,9 @@ class EngineLoop {
 
  private:
   using Clock = std::chrono::steady_clock;
+
+  /// t has reached target (up to rounding of a sum of steps).
+  static bool reached(double t, double target) { return t >= target - 1e-12 * std::max(1.0, std::abs(target)); }
 
   void apply(const Command& c);          // one command; true state changes only
   void adopt(const InboxBatch& b);       // mailbox params
