@@ -1,7 +1,9 @@
 // The declaration of every run parameter (see sph/param_table.h), group by group in the table's order
-// (the order of `sph params`, the GUI and the scene assets); how one entry is made: params/param_entry.h.
+// (the order of `sph params`, the GUI and the scene assets); how one entry is made: params/param_entry.h,
+// which stage owns each: params/param_owners.h.
 #include "sph/param_table.h"
 #include "params/param_entry.h"
+#include "params/param_owners.h"
 
 #include <array>
 #include <cmath>
@@ -11,68 +13,7 @@ namespace sph {
 namespace {
 
 using namespace param_entry;
-
-// Which stage a parameter belongs to: the words that name it in messages, its slot, and when it is used.
-using Owner = Common::Owner;
-const Owner kVariableH{"the Newton-Raphson smoothing-length solve", Slot::Smoothing,
-                       [](const Params& p) { return p.physics.smoothing == HMode::Variable; }};
-const Owner kContinuity{"the continuity density", Slot::Density,
-                        [](const Params& p) { return p.physics.density == DensityMode::Continuity; }};
-const Owner kGammaOwner{"the ideal-gas or polytropic equation of state", Slot::Eos, [](const Params& p) {
-                           return p.physics.eos == EosType::IdealGas || p.physics.eos == EosType::Polytropic;
-                         }};
-const Owner kPolytropic{"the polytropic equation of state", Slot::Eos,
-                        [](const Params& p) { return p.physics.eos == EosType::Polytropic; }};
-const Owner kDamping{"the damping body force", Slot::BodyForce,
-                     [](const Params& p) { return p.physics.body_force == BodyForce::Damping; }};
-const Owner kIsothermal{"the isothermal equation of state", Slot::Eos,
-                        [](const Params& p) { return p.physics.eos == EosType::Isothermal; }};
-const Owner kTait{"the Tait equation of state", Slot::Eos, [](const Params& p) { return p.physics.eos == EosType::Tait; }};
-const Owner kMonaghan{"the Monaghan viscosity stage", Slot::Viscosity,
-                      [](const Params& p) { return p.physics.viscosity == ViscType::Monaghan; }};
-const Owner kConstantAlpha{"the Monaghan viscosity with a constant or Balsara-limited alpha", Slot::Viscosity,
-                           [](const Params& p) {
-                             return p.physics.viscosity == ViscType::Monaghan &&
-                                    p.physics.visc_switch != ViscSwitch::CullenDehnen;
-                           }};
-const Owner kSwitchable{"the Monaghan viscosity of the standard and standard-corrected forces", Slot::Viscosity,
-                        [](const Params& p) {
-                          const Physics& ph = p.physics;
-                          return ph.viscosity == ViscType::Monaghan &&
-                                 (ph.force == ForceType::Standard || ph.force == ForceType::StandardCorrected);
-                        }};
-const Owner kCullenDehnen{"the Cullen-Dehnen viscosity switch (visc.switch = cullen_dehnen)", Slot::Viscosity,
-                          [](const Params& p) { return p.physics.visc_switch == ViscSwitch::CullenDehnen; }};
-const Owner kLaplacian{"the Laplacian viscosity stage", Slot::Viscosity,
-                       [](const Params& p) { return p.physics.viscosity == ViscType::Laplacian; }};
-const Owner kAnyViscosity{"a viscosity stage", Slot::Viscosity,
-                          [](const Params& p) { return p.physics.viscosity != ViscType::None; }};
-const Owner kConduction{"the conduction stage", Slot::Conduction,
-                        [](const Params& p) { return p.physics.conduction == Toggle::On; }};
-const Owner kXsph{"the XSPH stage", Slot::Xsph, [](const Params& p) { return p.physics.xsph == Toggle::On; }};
-const Owner kBody{"the body-force stage", Slot::BodyForce,
-                  [](const Params& p) { return p.physics.body_force == BodyForce::Uniform; }};
-const Owner kGravity{"the self-gravity stage", Slot::Gravity,
-                     [](const Params& p) { return p.physics.gravity != GravityType::None; }};
-const Owner kTree{"the Barnes-Hut tree", Slot::Gravity, [](const Params& p) { return p.physics.gravity == GravityType::Tree; }};
-const Owner kPlummer{"Plummer-softened self-gravity", Slot::Gravity, [](const Params& p) {
-                       return p.physics.gravity != GravityType::None && p.gravity.softening == Softening::Plummer;
-                     }};
-const Owner kKernel{"the SPH kernel (SPH stages or kernel-softened gravity)", Slot::Density, [](const Params& p) {
-                      const Physics& ph = p.physics;
-                      return ph.density != DensityMode::None || ph.force != ForceType::None || ph.xsph == Toggle::On ||
-                             (ph.gravity != GravityType::None && p.gravity.softening == Softening::Kernel);
-                    }};
-const Owner kFpm{"the finite pointset method", Slot::Fpm, [](const Params& p) { return p.physics.fpm != FpmType::None; }};
-const Owner kFpmViscous{"the viscous Burgers scheme", Slot::Fpm,
-                        [](const Params& p) { return p.physics.fpm == FpmType::BurgersViscous; }};
-const Owner kLJ{"the Lennard-Jones wall stage", Slot::Walls,
-                [](const Params& p) { return p.physics.walls == WallType::LennardJones; }};
-const Owner kCorrected{"the kernel corrections (corrected formulations, MLS density re-initialisation)", Slot::Force,
-                       [](const Params& p) {
-                         return p.physics.corrected() ||
-                                (p.physics.density == DensityMode::Continuity && p.density.reinit_every > 0);
-                       }};
+using namespace param_owner;
 
 /// The slots first, in pipeline order; "h_mode" was the smoothing slot's flat key.
 void add_slots(std::vector<ParamInfo>& t) {
