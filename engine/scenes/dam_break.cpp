@@ -30,12 +30,9 @@ Params liquid_defaults(double H, double alpha = 0.1) {
 }  // namespace
 
 SPH_SCENE(90, dam_break_scene) {
-  SceneSpec s;
-  s.name = "dam_break";
-  s.category = "free-surface liquids (seed 001)";
-  s.units = UnitSystem::si();
-  s.description = "water column a x 2a collapses in a 4a tank; surge front vs Martin & Moyce 1952, Koshizuka & Oka 1996";
-  s.dim = 2;
+  SceneSpec s = liquid_scene(
+      "dam_break",
+      "water column a x 2a collapses in a 4a tank; surge front vs Martin & Moyce 1952, Koshizuka & Oka 1996");
   s.params = {{"a", 1.0, 0.01, 100.0, false, "column width a [m] (height 2a, tank length 4a)", "m"},
               {"dx", 0.025, 1e-4, 1.0, false, "particle spacing [m]", "m"}};
   // alpha = 0.2: the artificial viscosity between the fluid and the wall particles is the only wall
@@ -45,7 +42,6 @@ SPH_SCENE(90, dam_break_scene) {
   s.defaults = liquid_defaults(2.0 * s.params[0].value, 0.2);
   s.defaults.time.t_end = 0.7;  // T = t sqrt(2g/a) = 3.1 for a = 1 m
   s.defaults.time.dt_out = 0.05;
-  s.allow(Slot::Eos, {"tait"});
   s.allow(Slot::Walls, {"dummy", "lennard_jones"});
   s.build = [](const Params& prm, const SceneValues& v) {
     const double a = v.at("a"), dx = v.at("dx"), L = 4.0 * a, H = 2.0 * a;
@@ -64,12 +60,9 @@ SPH_SCENE(90, dam_break_scene) {
 }
 
 SPH_SCENE(100, dam_break_slope_scene) {
-  SceneSpec s;
-  s.name = "dam_break_slope";
-  s.category = "free-surface liquids (seed 001)";
-  s.units = UnitSystem::si();
-  s.description = "seed 001 §7.2: a column released towards a 30 degree slope, Lennard-Jones walls, dt = 0.15 ms; comes to rest";
-  s.dim = 2;
+  SceneSpec s = liquid_scene(
+      "dam_break_slope",
+      "seed 001 §7.2: a column released towards a 30 degree slope, Lennard-Jones walls, dt = 0.15 ms; comes to rest");
   s.params = {{"width", 0.3, 0.01, 10.0, false, "column width [m]", "m"},
               {"height", 0.6, 0.01, 10.0, false, "column height H [m]", "m"},
               {"floor", 0.6, 0.0, 100.0, false, "length of the flat floor before the slope [m]", "m"},
@@ -86,7 +79,6 @@ SPH_SCENE(100, dam_break_slope_scene) {
   s.defaults.time.dt = 1.5e-4;                         // seed 001 §7.2: dt = 0.15 ms
   s.defaults.time.t_end = 5.0;                         // the seed's water is at rest by t = 4.5 s
   s.defaults.time.dt_out = 0.1;
-  s.allow(Slot::Eos, {"tait"});
   s.allow(Slot::Walls, {"lennard_jones"});
   s.build = [](const Params& prm, const SceneValues& v) {
     const double W = v.at("width"), H = v.at("height"), F = v.at("floor"), dx = v.at("dx");

@@ -61,17 +61,13 @@ std::vector<Vec3> random_disc(std::size_t count, std::uint64_t seed) {
 }  // namespace
 
 SPH_SCENE(80, elliptical_drop_scene) {
-  SceneSpec s;
-  s.name = "elliptical_drop";
-  s.category = "free-surface liquids (seed 001)";
-  s.units = UnitSystem::si();
-  s.description = "seed 001 §7.1: water circle with v = (-100x, 100y) becomes an ellipse; ODE semi-axes as reference";
-  s.dim = 2;
+  SceneSpec s = liquid_scene(
+      "elliptical_drop",
+      "seed 001 §7.1: water circle with v = (-100x, 100y) becomes an ellipse; ODE semi-axes as reference");
   Params& d = s.defaults;
   d = liquid_params(std::sqrt(7.0 * 285.714e6 / 1000.0), 0.03);  // seed 001: k = 285.714 MN/m^2 is B
   d.time.t_end = 0.0076;
   d.time.dt_out = 0.0004;
-  s.allow(Slot::Eos, {"tait"});
   s.allow(Slot::Walls, {"none"});
   s.params = {{"dx", 0.025, 0.002, 0.2, false, "lattice spacing [m] (with random = 0)", "m"},
               {"random", 0, 0, 1, true, "1: random points as in the seed (count of them), 0: square lattice", "dimensionless (0 or 1)"},

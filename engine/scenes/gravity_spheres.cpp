@@ -9,6 +9,8 @@
 //    gamma = 5/3, alpha = 1, beta = 2, eps = 0.05, N = 4096, SPH with self-gravity.
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <utility>
 
 #include "nbody_common.h"
 #include "scene_registration.h"
@@ -35,21 +37,23 @@ std::vector<Vec3> sample_sphere(std::size_t n, double R, std::uint64_t seed) {
   return pts;
 }
 
-SceneSpec sphere_base() {
-  SceneSpec s;
-  s.category = "gravity / self-gravitating spheres (seed 003)";
-  s.dim = 3;
-  return s;
+SceneSpec sphere_base(std::string name, std::string description) {
+  return scene_head(std::move(name), "gravity / self-gravitating spheres (seed 003)", std::move(description), 3);
+}
+
+/// The seed of the rejection sampling (sample_sphere), a parameter of every scene here.
+SceneParam seed_param() {
+  return {"seed", 1, 0, 1e9, true, "random seed of the rejection sampling", "dimensionless (random seed)"};
 }
 
 }  // namespace
 
 SPH_SCENE(150, dust_sphere_scene) {
-  SceneSpec s = sphere_base();
-  s.name = "dust_sphere";
-  s.description = "seed 003 §2.7: a pressureless sphere rho ~ 1/r collapses under its own gravity (N = 4000, eps = 0.1)";
+  SceneSpec s = sphere_base(
+      "dust_sphere",
+      "seed 003 §2.7: a pressureless sphere rho ~ 1/r collapses under its own gravity (N = 4000, eps = 0.1)");
   s.params = {{"n", 4000, 2, 1e7, true, "number of particles", "count"},
-              {"seed", 1, 0, 1e9, true, "random seed of the rejection sampling", "dimensionless (random seed)"}};
+              seed_param()};
   make_nbody(s, GravityType::Tree, 1.0);
   s.defaults.gravity.eps = 0.1;  // seed 003 Fig. 2.17
   s.defaults.time.cfl = 0.05;    // dt = 0.05 sqrt(eps / |a|): |dE/E| < 1e-4 (0.2: 4e-3)
@@ -66,13 +70,13 @@ SPH_SCENE(150, dust_sphere_scene) {
 }
 
 SPH_SCENE(160, dust_collision_scene) {
-  SceneSpec s = sphere_base();
-  s.name = "dust_collision";
-  s.description = "seed 003 §3.4.2: two rho ~ 1/r dust spheres meet head-on (4 apart, approaching at 0.5 each)";
+  SceneSpec s = sphere_base(
+      "dust_collision",
+      "seed 003 §3.4.2: two rho ~ 1/r dust spheres meet head-on (4 apart, approaching at 0.5 each)");
   s.params = {{"n", 1000, 2, 1e7, true, "particles per sphere (seed: 1000)", "count"},
               {"separation", 4.0, 0.0, 1e3, false, "distance between the centres (seed: 10)", "length"},
               {"speed", 0.5, 0.0, 1e3, false, "speed of each sphere towards the other (seed: 0)", "length/time"},
-              {"seed", 1, 0, 1e9, true, "random seed of the rejection sampling", "dimensionless (random seed)"}};
+              seed_param()};
   make_nbody(s, GravityType::Tree, 1.0);
   s.defaults.gravity.eps = 0.1;
   s.defaults.time.cfl = 0.2;
@@ -91,12 +95,12 @@ SPH_SCENE(160, dust_collision_scene) {
 }
 
 SPH_SCENE(170, evrard_scene) {
-  SceneSpec s = sphere_base();
-  s.name = "evrard";
-  s.description = "seed 003 §3.4.1 (Evrard 1988): a cold gas sphere rho ~ 1/r collapses, bounces and heats (N = 4096)";
+  SceneSpec s = sphere_base(
+      "evrard",
+      "seed 003 §3.4.1 (Evrard 1988): a cold gas sphere rho ~ 1/r collapses, bounces and heats (N = 4096)");
   s.params = {{"n", 4096, 8, 1e7, true, "number of particles (seed: 4096)", "count"},
               {"u0", 0.05, 0.0, 10.0, false, "initial specific internal energy [G M / R] (seed: 0.05)", "G M / R"},
-              {"seed", 1, 0, 1e9, true, "random seed of the rejection sampling", "dimensionless (random seed)"}};
+              seed_param()};
   Params& d = s.defaults;
   d.physics.gravity = GravityType::Tree;
   d.gravity.G = 1.0;

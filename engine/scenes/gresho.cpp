@@ -18,16 +18,14 @@ namespace sph::scenes {
 SPH_SCENE(250, gresho_scene) {
   // no shocks: a weak viscosity only keeps the particles ordered (L1 at 64^2: 0.067, against 0.094
   // with alpha = 1, beta = 2, and 0.15 at 32^2 without viscosity)
-  SceneSpec s = gas_test_scene(
-      "gresho", "gas dynamics / multidimensional tests",
+  SceneSpec s = smooth_flow_scene(
+      "gresho",
       "Gresho-Chan vortex, rho 1, gamma 5/3, periodic [-0.5,0.5]^2, stationary: reference L1(v_phi) = mean over "
       "particles of |v_phi - v_phi_exact(r)|; passes if L1(v_phi) at t = 1 is below 0.08 at 64^2 and falls with N "
       "(measured 0.108 / 0.067 / 0.041 at 32^2 / 64^2 / 128^2)",
-      2, KernelType::M6, 5.0 / 3.0, 0.1, 0.2);
+      64);
   s.defaults.time.t_end = 1.0;
   s.defaults.time.dt_out = 0.1;
-  s.allow(Slot::BodyForce, {"none"});
-  s.params = start_params(64);
   s.build = [dim = s.dim](const Params& prm, const SceneValues& v) {
     const Lattice start = start_positions(dim, {-0.5, -0.5, 0.0}, {0.5, 0.5, 0.0}, v);
     const std::vector<Vec3>& x = start.x;

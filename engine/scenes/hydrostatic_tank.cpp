@@ -11,12 +11,9 @@
 namespace sph::scenes {
 
 SPH_SCENE(110, hydrostatic_tank_scene) {
-  SceneSpec s;
-  s.name = "hydrostatic_tank";
-  s.category = "free-surface liquids (seed 001)";
-  s.units = UnitSystem::si();
-  s.description = "water at rest in a 1 m tank under gravity; pressure against rho0 g (H - y)";
-  s.dim = 2;
+  SceneSpec s = liquid_scene(
+      "hydrostatic_tank",
+      "water at rest in a 1 m tank under gravity; pressure against rho0 g (H - y)");
   s.params = {{"width", 1.0, 0.01, 100.0, false, "tank width [m]", "m"},
               {"depth", 1.0, 0.01, 100.0, false, "water depth H [m]", "m"},
               {"dx", 0.025, 1e-4, 1.0, false, "particle spacing [m]", "m"}};
@@ -24,7 +21,6 @@ SPH_SCENE(110, hydrostatic_tank_scene) {
   d = tank_params(1.0, 0.1);
   d.time.t_end = 1.0;
   d.time.dt_out = 0.1;
-  s.allow(Slot::Eos, {"tait"});
   s.allow(Slot::Walls, {"dummy", "lennard_jones"});
   s.build = [](const Params& prm, const SceneValues& v) {
     const double W = v.at("width"), H = v.at("depth"), dx = v.at("dx");

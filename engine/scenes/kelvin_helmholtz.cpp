@@ -20,16 +20,14 @@
 namespace sph::scenes {
 
 SPH_SCENE(260, kelvin_helmholtz_scene) {
-  SceneSpec s = gas_test_scene(
-      "kelvin_helmholtz", "gas dynamics / multidimensional tests",
+  SceneSpec s = smooth_flow_scene(
+      "kelvin_helmholtz",
       "Kelvin-Helmholtz, McNally et al. 2012 smooth layers (rho 1 | 2, v_x +-0.5, P 2.5, gamma 5/3), periodic "
       "[0,1]^2: reference the mode amplitude's fitted growth rate against the linear rate of the smooth "
       "compressible profile; passes if within 20% (rate_err < 0.2)",
-      2, KernelType::M6, 5.0 / 3.0, 0.1, 0.2);
+      128);
   s.defaults.time.t_end = 1.5;
   s.defaults.time.dt_out = 0.05;
-  s.allow(Slot::BodyForce, {"none"});
-  s.params = start_params(128);
   s.params.insert(s.params.end(), {
               {"ramp", 0.025, 1e-4, 0.1, false, "width L of the density and velocity ramps [length]", "length"},
               {"amplitude", 0.01, 0.0, 0.1, false, "seed v_y = amplitude sin(4 pi x) [length/time]", "length/time"},

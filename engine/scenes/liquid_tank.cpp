@@ -1,6 +1,7 @@
 #include "liquid_tank.h"
 
 #include <cmath>
+#include <utility>
 
 #include "scene_util.h"
 #include "sph/eos.h"
@@ -105,6 +106,12 @@ Particles make_liquid(const Params& prm, const LiquidLayout& layout, double dx, 
     p.kind[k] = static_cast<std::uint8_t>(wall ? Kind::Wall : Kind::Fluid);
   }
   return p;
+}
+
+SceneSpec liquid_scene(std::string name, std::string description) {
+  SceneSpec s = scene_head(std::move(name), "free-surface liquids (seed 001)", std::move(description), 2, UnitSystem::si());
+  s.allow(Slot::Eos, {"tait"});
+  return s;
 }
 
 }  // namespace sph::scenes

@@ -1,11 +1,13 @@
-// Building blocks of the liquid scenes: lattice blocks of fluid and wall particles for tanks and slopes.
+// Building blocks of the liquid scenes: their common head, lattice blocks of fluid and wall particles for tanks and slopes.
 // SI units. The inner surface of a wall is where its first layer of wall particles lies, half a
 // spacing outside the fluid lattice: fluid particle centres start dx/2 inside it.
 #pragma once
+#include <string>
 #include <vector>
 
 #include "sph/params.h"
 #include "sph/particles.h"
+#include "sph/scene.h"
 #include "sph/vec.h"
 
 namespace sph::scenes {
@@ -43,6 +45,10 @@ Params liquid_params(double c0, double alpha);
 /// liquid_params for water of depth H in a tank under gravity g = 9.81 m/s^2: c0 = 10 sqrt(2 g H) (Mach
 /// ~ 0.1 at the free-fall speed), uniform body force, dummy walls.
 Params tank_params(double H, double alpha);
+
+/// The liquid scenes' common head: 2D, SI units, category "free-surface liquids (seed 001)", Tait EOS
+/// only (the caller sets the physics, liquid_params or tank_params, and the walls it accepts).
+SceneSpec liquid_scene(std::string name, std::string description);
 
 /// Lennard-Jones strength of seed 001 §7.2: D = 5 g H.
 inline double lj_strength(double g, double H) { return 5.0 * g * H; }

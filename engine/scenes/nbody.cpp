@@ -8,10 +8,13 @@
 //    the planets' momentum (0.0027 AU/yr).
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <utility>
 
 #include "nbody_common.h"
 #include "reference/nbody_reference.h"
 #include "scene_registration.h"
+#include "scene_util.h"
 
 namespace sph::scenes {
 namespace {
@@ -41,18 +44,23 @@ std::vector<Body> solar_bodies() {
   return b;
 }
 
+/// The point-mass scenes' common head: 2D, astronomical units, pure N-body with direct gravity (G in
+/// AU^3 / (Msun yr^2)).
+SceneSpec planet_scene(std::string name, std::string description) {
+  SceneSpec s = scene_head(std::move(name), "gravity / N-body (seed 003 ch. 2)", std::move(description), 2,
+                           UnitSystem::astronomical());
+  make_nbody(s, GravityType::Direct, kG);
+  return s;
+}
+
 }  // namespace
 
 SPH_SCENE(120, two_body_fall_scene) {
-  SceneSpec s;
-  s.name = "two_body_fall";
-  s.category = "gravity / N-body (seed 003 ch. 2)";
-  s.units = UnitSystem::astronomical();
-  s.description = "seed 003 §2.3: the Earth released at rest 1 AU from the Sun falls in; against the closed form eq. 2.17";
-  s.dim = 2;
+  SceneSpec s = planet_scene(
+      "two_body_fall",
+      "seed 003 §2.3: the Earth released at rest 1 AU from the Sun falls in; against the closed form eq. 2.17");
   s.params = {{"r0", 1.0, 1e-3, 1e3, false, "initial separation [AU]", "AU"},
               {"m_earth", kEarth, 0.0, 1.0, false, "mass of the falling body [Msun] (seed: 3.00e-6)", "Msun"}};
-  make_nbody(s, GravityType::Direct, kG);
   s.defaults.time.integrator = IntegratorType::RK4;  // the fall is not an orbit: accuracy, not symplecticity
   s.defaults.time.cfl = 0.01;                        // dt = 0.01 of the pair's dynamical time sqrt(r^3/mu)
   s.defaults.time.t_end = 0.175;                     // the encounter is at t = 0.1768 yr (r = 0.08 AU at 0.175)
@@ -63,17 +71,13 @@ SPH_SCENE(120, two_body_fall_scene) {
 }
 
 SPH_SCENE(130, kepler_scene) {
-  SceneSpec s;
-  s.name = "kepler";
-  s.category = "gravity / N-body (seed 003 ch. 2)";
-  s.units = UnitSystem::astronomical();
-  s.description = "seed 003 §2.4: Sun and Earth, v = 6.218 AU/yr (or any eccentricity); against the Kepler orbit";
-  s.dim = 2;
+  SceneSpec s = planet_scene(
+      "kepler",
+      "seed 003 §2.4: Sun and Earth, v = 6.218 AU/yr (or any eccentricity); against the Kepler orbit");
   s.params = {{"r0", 1.0, 1e-3, 1e3, false, "initial separation (aphelion when e >= 0) [AU]", "AU"},
               {"v0", 6.218, 0.0, 1e3, false, "tangential speed of the Earth when e < 0 [AU/yr] (seed: 6.218)", "AU/yr"},
               {"e", -1.0, -1.0, 0.99, false, "eccentricity of an orbit started at aphelion; < 0: use v0", "dimensionless"},
               {"m_earth", kEarth, 0.0, 1.0, false, "mass of the orbiting body [Msun]", "Msun"}};
-  make_nbody(s, GravityType::Direct, kG);
   s.defaults.time.dt = 0.002;  // fixed (leapfrog stays symplectic): 485 steps per orbit of the seed's 0.97 yr
   s.defaults.time.t_end = 10.0;
   s.defaults.time.dt_out = 0.1;
@@ -85,13 +89,9 @@ SPH_SCENE(130, kepler_scene) {
 }
 
 SPH_SCENE(140, solar_system_scene) {
-  SceneSpec s;
-  s.name = "solar_system";
-  s.category = "gravity / N-body (seed 003 ch. 2)";
-  s.units = UnitSystem::astronomical();
-  s.description = "seed 003 §2.5.1: the Sun, eight planets and Pluto from the seed's table; energy and angular momentum";
-  s.dim = 2;
-  make_nbody(s, GravityType::Direct, kG);
+  SceneSpec s = planet_scene(
+      "solar_system",
+      "seed 003 §2.5.1: the Sun, eight planets and Pluto from the seed's table; energy and angular momentum");
   s.defaults.time.dt = 0.001;  // fixed: 240 steps per orbit of Mercury (0.24 yr)
   s.defaults.time.t_end = 100.0;
   s.defaults.time.dt_out = 1.0;

@@ -48,18 +48,13 @@ SceneSetup build_noh(const Params& prm, const SceneValues& v) {
 }  // namespace
 
 SPH_SCENE(240, noh_scene) {
-  SceneSpec s = gas_test_scene(
+  SceneSpec s = strong_shock_scene(
       "noh", "gas dynamics / implosions",
       "Noh implosion, 2D: a cold disc (rho = 1, u = 1e-6) converging at speed 1, gamma 5/3, hexagonal lattice 200 "
       "across r < 1, t = 0.6; exact: rho = 16 behind the shock at t/3; pass: post-shock rho within 10% of 16",
-      2, KernelType::M4, 5.0 / 3.0, 1.0, 2.0);
-  Params& d = s.defaults;
-  d.physics.conduction = Toggle::On;
-  d.conduction.alpha_u = 1.0;
-  d.time.integrator = IntegratorType::Leapfrog;
-  d.time.t_end = 0.6;
-  d.time.dt_out = 0.1;
-  s.allow(Slot::Energy, {"on"});
+      2);
+  s.defaults.time.t_end = 0.6;
+  s.defaults.time.dt_out = 0.1;
   s.params = {{"n_side", 200, 4, 20000, true, "lattice spacings across the disc's diameter (spacing 2 radius / n_side)", "count"},
               {"radius", 1.0, 0.01, 1e3, false, "initial radius of the gas disc [length]", "length"},
               {"rho0", 1.0, 1e-9, 1e9, false, "initial density", "mass/volume"},

@@ -1,5 +1,7 @@
 #include "scene_util.h"
 
+#include <utility>
+
 #include "core/pipeline.h"
 #include "sph/kernel.h"
 
@@ -27,13 +29,19 @@ void without_sph(SceneSpec& s) {
   s.allow(Slot::Smoothing, {"fixed"});
 }
 
-SceneSpec gas_test_scene(std::string name, std::string category, std::string description, int dim, KernelType kernel,
-                         double gamma, double alpha, double beta) {
+SceneSpec scene_head(std::string name, std::string category, std::string description, int dim, UnitSystem units) {
   SceneSpec s;
   s.name = std::move(name);
   s.category = std::move(category);
   s.description = std::move(description);
   s.dim = dim;
+  s.units = std::move(units);
+  return s;
+}
+
+SceneSpec gas_test_scene(std::string name, std::string category, std::string description, int dim, KernelType kernel,
+                         double gamma, double alpha, double beta) {
+  SceneSpec s = scene_head(std::move(name), std::move(category), std::move(description), dim);
   s.defaults.kernel.type = kernel;
   s.defaults.gas.gamma = gamma;
   s.defaults.visc.alpha = alpha;

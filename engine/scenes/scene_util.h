@@ -36,6 +36,11 @@ double effective_eta(const Params& prm, int dim);
 /// walls), h fixed.
 void without_sph(SceneSpec& s);
 
+/// A scene's identity: its name, category, one-line description, dimension and units (code units unless
+/// given); everything else at its default.
+SceneSpec scene_head(std::string name, std::string category, std::string description, int dim,
+                     UnitSystem units = {});
+
 /// The common start of a gas test scene: ideal gas only, no walls, the given kernel, gamma and
 /// Monaghan viscosity (alpha, beta); the caller adds the rest.
 SceneSpec gas_test_scene(std::string name, std::string category, std::string description, int dim, KernelType kernel,

@@ -49,14 +49,9 @@ SceneSetup build_blast(int dim, const Params& prm, const SceneValues& v) {
 }
 
 SceneSpec blast_scene(int dim, const char* name, const char* description, double half, double n_side) {
-  SceneSpec s = gas_test_scene(name, "gas dynamics / blast waves", description, dim, KernelType::M4, 5.0 / 3.0, 1.0, 2.0);
-  Params& d = s.defaults;
-  d.physics.conduction = Toggle::On;
-  d.conduction.alpha_u = 1.0;
-  d.time.integrator = IntegratorType::Leapfrog;
-  d.time.t_end = 0.1;
-  d.time.dt_out = 0.025;
-  s.allow(Slot::Energy, {"on"});
+  SceneSpec s = strong_shock_scene(name, "gas dynamics / blast waves", description, dim);
+  s.defaults.time.t_end = 0.1;
+  s.defaults.time.dt_out = 0.025;
   s.params = {{"n_side", n_side, 4, 4000, true, "lattice spacings across the box side (the spacing is 2 half / n_side)", "count"},
               {"half", half, 0.05, 1e3, false, "half-width of the periodic box [length]", "length"},
               {"E", 1.0, 1e-9, 1e9, false, "blast energy (2D: per unit length)", "energy"},

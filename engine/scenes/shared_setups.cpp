@@ -3,8 +3,10 @@
 
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include "scene_util.h"
+#include "start_positions.h"
 #include "sph/config.h"
 
 namespace sph::scenes {
@@ -34,11 +36,7 @@ double sphere_spacing(std::size_t n, double R) {
 }
 
 SceneSpec polytrope_base(std::string name, std::string description) {
-  SceneSpec s;
-  s.name = std::move(name);
-  s.category = "gravity / self-gravitating spheres (seed 003)";
-  s.description = std::move(description);
-  s.dim = 3;
+  SceneSpec s = scene_head(std::move(name), "gravity / self-gravitating spheres (seed 003)", std::move(description), 3);
   Params& d = s.defaults;
   d.physics.gravity = GravityType::Tree;
   d.gravity.softening = Softening::Kernel;
@@ -60,6 +58,36 @@ LaneEmden star_profile(const Params& prm) {
 
 PolytropeScales star_scales(const LaneEmden& le, const Params& prm) {
   return polytrope_scales(le, 1.0, prm.gas.K, prm.gravity.G);
+}
+
+SceneSpec tube_scene(std::string name, std::string description, int dim, KernelType kernel, double t_end,
+                     double dt_out, std::vector<std::string> eos) {
+  SceneSpec s = scene_head(std::move(name), "gas dynamics / shock tubes", std::move(description), dim);
+  s.defaults.kernel.type = kernel;
+  s.defaults.time.t_end = t_end;
+  s.defaults.time.dt_out = dt_out;
+  s.allow(Slot::Eos, std::move(eos));
+  s.allow(Slot::Walls, {"none"});
+  return s;
+}
+
+SceneSpec strong_shock_scene(std::string name, std::string category, std::string description, int dim) {
+  SceneSpec s = gas_test_scene(std::move(name), std::move(category), std::move(description), dim, KernelType::M4,
+                               5.0 / 3.0, 1.0, 2.0);
+  Params& d = s.defaults;
+  d.physics.conduction = Toggle::On;
+  d.conduction.alpha_u = 1.0;
+  d.time.integrator = IntegratorType::Leapfrog;
+  s.allow(Slot::Energy, {"on"});
+  return s;
+}
+
+SceneSpec smooth_flow_scene(std::string name, std::string description, double n_side) {
+  SceneSpec s = gas_test_scene(std::move(name), "gas dynamics / multidimensional tests", std::move(description), 2,
+                               KernelType::M6, 5.0 / 3.0, 0.1, 0.2);
+  s.allow(Slot::BodyForce, {"none"});
+  s.params = start_params(n_side);
+  return s;
 }
 
 std::vector<SceneParam> tube_state_params(const GasState& left, const GasState& right, const std::string& density_unit) {

@@ -1,6 +1,7 @@
 // Set-ups several scenes share, so that a scene file states only what is its own: gas particles at
 // given positions in a periodic box (the gas test boxes), the polytropic star of seed 003 §3.4.3 (its
-// physics, its Lane-Emden solution and scales) and the two gas states of a shock tube (left | right).
+// physics, its Lane-Emden solution and scales), the heads of the shock tubes, the strong-shock tests and the
+// smooth 2D flows, and the two gas states of a shock tube (left | right).
 #pragma once
 #include <string>
 #include <utility>
@@ -34,6 +35,19 @@ LaneEmden star_profile(const Params& prm);
 
 /// alpha, rho_c and R of the star of mass 1 with prm's gas.K and gravity.G.
 PolytropeScales star_scales(const LaneEmden& le, const Params& prm);
+
+/// A shock tube's common head: category "gas dynamics / shock tubes", the kernel, t_end with an output
+/// every dt_out, the EOS options `eos`, no wall particles (the tube's walls are its domain's).
+SceneSpec tube_scene(std::string name, std::string description, int dim, KernelType kernel, double t_end,
+                     double dt_out, std::vector<std::string> eos);
+
+/// The strong-shock tests' common start (Noh, Sedov): gas_test_scene with M4, gamma 5/3, alpha = 1 and
+/// beta = 2, artificial conduction (alpha_u = 1), the energy equation (only "on"), leapfrog.
+SceneSpec strong_shock_scene(std::string name, std::string category, std::string description, int dim);
+
+/// The smooth 2D flows' common start (Gresho, Kelvin-Helmholtz): gas_test_scene with M6, gamma 5/3 and a
+/// weak viscosity alpha = 0.1, beta = 0.2 (no shocks), no body force, start_params(n_side).
+SceneSpec smooth_flow_scene(std::string name, std::string description, double n_side);
 
 /// A tube's two states as the keys rho_l, v_l, p_l, rho_r, v_r, p_r (density in `density_unit`,
 /// velocities along x).

@@ -39,16 +39,9 @@ RightLattice right_lattice(const SceneValues& v) {
 }  // namespace
 
 SPH_SCENE(70, tube2d_scene) {
-  SceneSpec s;
-  s.name = "tube2d";
-  s.category = "gas dynamics / shock tubes";
-  s.description = "seed 000 §4.2: 2D tube [0,5]x[0,1], 4:1 compressed gas, mirror walls, 512 particles, quintic";
-  s.dim = 2;
-  s.defaults.kernel.type = KernelType::M6;
-  s.defaults.time.t_end = 20.0;
-  s.defaults.time.dt_out = 1.0;
-  s.allow(Slot::Eos, {"ideal_gas", "isothermal"});
-  s.allow(Slot::Walls, {"none"});
+  SceneSpec s = tube_scene("tube2d",
+                           "seed 000 §4.2: 2D tube [0,5]x[0,1], 4:1 compressed gas, mirror walls, 512 particles, quintic",
+                           2, KernelType::M6, 20.0, 1.0, {"ideal_gas", "isothermal"});
   s.energy_bound = 1e-3;  // measured to t = 20: 1.6e-5 (leapfrog)
   s.params = {{"n_side", 16, 2, 2000, true, "lattice particles per unit length on the dense side (seed: 16)", "particles per length"}};
   // the seed's gas: 4:1 compressed on the left, u = 0.05 at gamma 1.4 on both sides

@@ -34,29 +34,29 @@ struct M4 {  // seed 000 eq. 3.2.7
   }
 };
 
-struct M5 {  // seed 000 eq. 3.2.8
-  static constexpr double support = 2.5;
+/// The B-splines of three clamped terms: a, b, c = max(K - q, 0), max(K - 1 - q, 0), max(K - 2 - q, 0)
+/// with K the support, w = a^P - c1 b^P + c2 c^P and dw/dq = -P a^(P-1) + P c1 b^(P-1) - P c2 c^(P-1).
+template <int P, int C1, int C2, int TwiceSupport>
+struct ThreeTermSpline {
+  static_assert(P == 4 || P == 5);
+  static constexpr double support = TwiceSupport / 2.0;
+  static double pow_p(double x) { return P == 4 ? detail::pow4(x) : detail::pow5(x); }
+  static double pow_p1(double x) { return P == 4 ? detail::pow3(x) : detail::pow4(x); }
   double w(double q) const {
-    const double a = detail::clamp0(2.5 - q), b = detail::clamp0(1.5 - q), c = detail::clamp0(0.5 - q);
-    return detail::pow4(a) - 5.0 * detail::pow4(b) + 10.0 * detail::pow4(c);
+    const double a = detail::clamp0(support - q), b = detail::clamp0(support - 1.0 - q),
+                 c = detail::clamp0(support - 2.0 - q);
+    return pow_p(a) - double{C1} * pow_p(b) + double{C2} * pow_p(c);
   }
   double dw(double q) const {
-    const double a = detail::clamp0(2.5 - q), b = detail::clamp0(1.5 - q), c = detail::clamp0(0.5 - q);
-    return -4.0 * detail::pow3(a) + 20.0 * detail::pow3(b) - 40.0 * detail::pow3(c);
+    const double a = detail::clamp0(support - q), b = detail::clamp0(support - 1.0 - q),
+                 c = detail::clamp0(support - 2.0 - q);
+    return -double{P} * pow_p1(a) + double{P * C1} * pow_p1(b) - double{P * C2} * pow_p1(c);
   }
 };
 
-struct M6 {  // seed 000 eq. 3.2.9
-  static constexpr double support = 3.0;
-  double w(double q) const {
-    const double a = detail::clamp0(3.0 - q), b = detail::clamp0(2.0 - q), c = detail::clamp0(1.0 - q);
-    return detail::pow5(a) - 6.0 * detail::pow5(b) + 15.0 * detail::pow5(c);
-  }
-  double dw(double q) const {
-    const double a = detail::clamp0(3.0 - q), b = detail::clamp0(2.0 - q), c = detail::clamp0(1.0 - q);
-    return -5.0 * detail::pow4(a) + 30.0 * detail::pow4(b) - 75.0 * detail::pow4(c);
-  }
-};
+struct M5 : ThreeTermSpline<4, 5, 10, 5> {};  // seed 000 eq. 3.2.8
+
+struct M6 : ThreeTermSpline<5, 6, 15, 6> {};  // seed 000 eq. 3.2.9
 
 /// seed 000 eq. 3.2.6, truncated at q = 3 (the normalisation accounts for it). e^(-q^2) by exp_poly
 /// (within 2 ulp of the library's exp), so the pair loops vectorise; its argument is clamped to the

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "dam_break_data.h"
+#include "reference/compared_columns.h"
 
 namespace sph::scenes {
 namespace {
@@ -32,7 +33,7 @@ class DamBreakReference final : public Reference {
     const double T = t * std::sqrt(2.0 * g_ / a_);
     const double Z = (xmax + 0.5 * dx_) / a_;
     const double mm = interpolate_front(martin_moyce_front(), T), ko = interpolate_front(koshizuka_oka_front(), T);
-    const double e_mm = std::abs(Z / mm - 1.0), e_ko = std::abs(Z / ko - 1.0);
+    const double e_mm = relative_error(Z, mm), e_ko = relative_error(Z, ko);
     const double e = std::isnan(e_mm) ? e_ko : std::isnan(e_ko) ? e_mm : std::min(e_mm, e_ko);
     return {T, Z, mm, ko, e_mm, e_ko, e};
   }

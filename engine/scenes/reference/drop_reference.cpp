@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "drop_ode.h"
+#include "reference/compared_columns.h"
 
 namespace sph::scenes {
 namespace {
@@ -36,7 +37,7 @@ class DropReference final : public Reference {
     }
     const DropState e = drop_ode(A0_, t);
     const double ae = e.a, be = 1.0 / e.a;
-    return {a, ae, b, be, a * b, 1.0, std::abs(b / be - 1.0), std::abs(a / ae - 1.0), std::abs(a * b - 1.0)};
+    return {a, ae, b, be, a * b, 1.0, relative_error(b, be), relative_error(a, ae), std::abs(a * b - 1.0)};
   }
 
   std::string description() const override {

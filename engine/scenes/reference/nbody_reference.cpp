@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "reference/compared_columns.h"
+
 namespace sph::scenes {
 namespace {
 
@@ -28,7 +30,7 @@ class Conservation final : public Reference {
   }
   std::vector<double> evaluate(const Particles& p, double) const override {
     const Invariants I = invariants(p, G_, eps_);
-    return {I.E, I.Lz, std::abs(I.E / I0_.E - 1.0), std::abs(I.Lz / I0_.Lz - 1.0)};
+    return {I.E, I.Lz, relative_error(I.E, I0_.E), relative_error(I.Lz, I0_.Lz)};
   }
   std::string description() const override {
     return "point masses: total energy and angular momentum against their initial values (seed 003 eqs. 2.8, 2.13, 2.24)";
@@ -94,8 +96,8 @@ class Kepler final : public Reference {
     const Vec3 r = pos_of(p, 1) - pos_of(p, 0);
     const Vec3 k = position(t);
     const Invariants I = invariants(p, G_, 0.0);
-    return {t * n_ / (2.0 * kPi), r.norm(), k.norm(), (r - k).norm() / a_, std::abs(I.E / I0_.E - 1.0),
-            std::abs(I.Lz / I0_.Lz - 1.0)};
+    return {t * n_ / (2.0 * kPi), r.norm(), k.norm(), (r - k).norm() / a_, relative_error(I.E, I0_.E),
+            relative_error(I.Lz, I0_.Lz)};
   }
   std::string description() const override {
     return "two-body orbit: relative position against the Kepler orbit of the initial state (Kepler's equation), "

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "reference/compared_columns.h"
+#include "reference/radial_curves.h"
 #include "reference/radial_profile.h"
 
 namespace sph::scenes {
@@ -11,15 +13,17 @@ class NohReference final : public Reference {
  public:
   explicit NohReference(const NohSetup& s) : s_(s) {}
   std::vector<RefColumn> columns() const override {
-    return {{"rho_post", "mean density over R/3 < r < R - margin, R = U t (exact rho2: 16 for gamma 5/3 in 2D) [mass/length^d]", false},
-            {"rho_post_err", "|rho_post / rho2 - 1|", true},
-            {"R", "shock radius from the particles: where the shell-mean density falls half way from its peak to the exact pre-shock density [length]", false},
-            {"R_exact", "U t, U = (gamma-1) v0/2 (t/3) [length]", false},
-            {"R_err", "|R / R_exact - 1|", true},
-            {"rho_centre", "mean density over r < R/3, the wall-heating region [mass/length^d]", false},
-            {"rho_centre_deficit", "1 - rho_centre / rho2 (wall heating: the centre is hot and underdense)", true},
-            {"u_centre_excess", "mean u over r < R/3, over the exact u2 = v0^2/2, minus 1", true},
-            {"L1_rho", "mean |rho - rho_exact(r)| over the particles with r < 1.5 R [mass/length^d]", true}};
+    std::vector<RefColumn> c = {
+        {"rho_post", "mean density over R/3 < r < R - margin, R = U t (exact rho2: 16 for gamma 5/3 in 2D) [mass/length^d]", false},
+        {"rho_post_err", "|rho_post / rho2 - 1|", true}};
+    append_columns(c, compared_columns("R", "shock radius from the particles: where the shell-mean density falls half way "
+                                            "from its peak to the exact pre-shock density [length]",
+                                       "U t, U = (gamma-1) v0/2 (t/3) [length]"));
+    append_columns(c, {{"rho_centre", "mean density over r < R/3, the wall-heating region [mass/length^d]", false},
+                       {"rho_centre_deficit", "1 - rho_centre / rho2 (wall heating: the centre is hot and underdense)", true},
+                       {"u_centre_excess", "mean u over r < R/3, over the exact u2 = v0^2/2, minus 1", true},
+                       {"L1_rho", "mean |rho - rho_exact(r)| over the particles with r < 1.5 R [mass/length^d]", true}});
+    return c;
   }
   std::vector<double> evaluate(const Particles& p, double t) const override {
     const Noh& noh = s_.noh;
@@ -51,7 +55,7 @@ class NohReference final : public Reference {
       R = shock_front(prof, noh.state(R_exact * 1.0000001, t).rho);
     }
     const double u2 = 0.5 * noh.v0 * noh.v0;
-    return {rho_post, std::abs(rho_post / rho2 - 1.0), R, R_exact, std::abs(R / R_exact - 1.0),
+    return {rho_post, relative_error(rho_post, rho2), R, R_exact, relative_error(R, R_exact),
             rho_c, 1.0 - rho_c / rho2, u_c / u2 - 1.0, n_l1 ? l1 / n_l1 : nan};
   }
   std::string description() const override {
@@ -64,23 +68,18 @@ class NohReference final : public Reference {
   std::vector<std::pair<int, int>> series() const override { return {{2, 3}}; }
   /// rho, |v| and P against r (axis 3) out to the gas's edge r_max - v0 t.
   ReferenceCurves curves(const Domain&, double t) const override {
-    ReferenceCurves c;
     const Noh& noh = s_.noh;
     const double R = noh.shock_radius(t), edge = s_.r_max - noh.v0 * t;
-    if (!(t > 0.0) || !(edge > R)) return c;
-    ExactCurve rho{"rho", {}, {}, 3}, speed{"speed", {}, {}, 3}, P{"p", {}, {}, 3};
+    if (!(t > 0.0) || !(edge > R)) return {};
+    RadialCurves rc;
     auto add = [&](double r) {
       const NohState q = noh.state(r, t);
-      for (ExactCurve* e : {&rho, &speed, &P}) e->x.push_back(static_cast<float>(r));
-      rho.value.push_back(static_cast<float>(q.rho));
-      speed.value.push_back(static_cast<float>(std::abs(q.v)));
-      P.value.push_back(static_cast<float>(q.P));
+      rc.add(r, q.rho, std::abs(q.v), q.P);
     };
     add(0.0);
     add(R * (1.0 - 1e-7));
     for (int k = 0; k <= 200; ++k) add(R + (edge - R) * k / 200.0);
-    c.profiles = {std::move(rho), std::move(speed), std::move(P)};
-    return c;
+    return rc.take();
   }
 
  private:

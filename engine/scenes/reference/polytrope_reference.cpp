@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "reference/compared_columns.h"
 #include "reference/lane_emden.h"
 
 namespace sph::scenes {
@@ -41,7 +42,7 @@ class PolytropeReference final : public Reference {
     }
     double worst = 0.0;
     for (int k = 0; k < kShells; ++k)
-      if (sum_le[k] > 0.0) worst = std::max(worst, std::abs(sum[k] / sum_le[k] - 1.0));
+      if (sum_le[k] > 0.0) worst = std::max(worst, relative_error(sum[k], sum_le[k]));
     const double virial = W != 0.0 ? thermal / std::abs(W) : std::nan("");
     return {s_.R, hydro ? worst : std::nan(""), virial, std::abs(virial - 1.0)};
   }

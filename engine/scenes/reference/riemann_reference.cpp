@@ -17,7 +17,10 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include "reference/compared_columns.h"
 
 namespace sph::scenes {
 namespace {
@@ -51,22 +54,21 @@ class RiemannReference final : public Reference {
   double valid_until() const override { return valid_until_; }
 
   std::vector<RefColumn> columns() const override {
-    return {{"count", "particles compared (x inside the tube, outside the walls' own waves)", false},
-            {"L1_rho", "mean |rho - rho_exact|", true},
-            {"L1_v", "mean |v - v_exact|", true},
-            {"L1_p", "mean |P - P_exact|", true},
-            {"L1_u", "mean |u - u_exact|", true},
-            {"Linf_rho", "max |rho - rho_exact|", true},
-            {"p_star", "median P of the particles in the star region (NaN before it is 8 h wide)", false},
-            {"p_star_exact", "exact star pressure p*", false},
-            {"p_star_err", "|p_star / p* - 1|", true},
-            {"u_star", "median v of the particles in the star region", false},
-            {"u_star_exact", "exact star velocity u*", false},
-            {"u_star_err", "|u_star - u*| / |u*| (or / c_max where |u*| < 0.05 c_max)", true},
-            {"rho_min", "smallest particle density inside the waves' fan (NaN before it holds a particle)", false},
-            {"rho_min_exact", "smallest exact density at those particles' positions", false},
-            {"rho_min_err", "|rho_min / rho_min_exact - 1|: the near-vacuum error of two rarefactions (Toro's \"123\"); "
-             "NaN for other wave patterns", true}};
+    std::vector<RefColumn> c = {{"count", "particles compared (x inside the tube, outside the walls' own waves)", false}};
+    const std::pair<const char*, const char*> l1[] = {{"rho", "rho"}, {"v", "v"}, {"p", "P"}, {"u", "u"}};
+    for (const auto& [key, f] : l1)  // L1 of f = rho, v, P, u: the column's key, the field's symbol
+      c.push_back({std::string("L1_") + key, std::string("mean |") + f + " - " + f + "_exact|", true});
+    append_columns(c, {{"Linf_rho", "max |rho - rho_exact|", true},
+                       {"p_star", "median P of the particles in the star region (NaN before it is 8 h wide)", false},
+                       {"p_star_exact", "exact star pressure p*", false},
+                       {"p_star_err", "|p_star / p* - 1|", true},
+                       {"u_star", "median v of the particles in the star region", false},
+                       {"u_star_exact", "exact star velocity u*", false},
+                       {"u_star_err", "|u_star - u*| / |u*| (or / c_max where |u*| < 0.05 c_max)", true}});
+    append_columns(c, compared_columns("rho_min", "smallest particle density inside the waves' fan (NaN before it holds a particle)",
+                                       "smallest exact density at those particles' positions", {},
+                                       ": the near-vacuum error of two rarefactions (Toro's \"123\"); NaN for other wave patterns"));
+    return c;
   }
 
   std::vector<double> evaluate(const Particles& p, double t) const override {
@@ -121,12 +123,12 @@ class RiemannReference final : public Reference {
       if (!pv.empty()) { ps = median(pv); us = median(vv); }
     }
     const double uscale = std::abs(star.v) >= 0.05 * c_max_ ? std::abs(star.v) : c_max_;
-    out.insert(out.end(), {ps, star.p, std::abs(ps / star.p - 1.0), us, star.v, std::abs(us - star.v) / uscale});
+    out.insert(out.end(), {ps, star.p, relative_error(ps, star.p), us, star.v, std::abs(us - star.v) / uscale});
     // only for two rarefactions (no shock, and the contact carries no density jump when the states are
     // symmetric, as in "123"): elsewhere the minimum would measure the smearing of a jump
     const bool two_rarefactions = star.p < L0.p && star.p < R0.p;
     if (!hr || !two_rarefactions || !std::isfinite(rmin)) rmin = rmin_exact = nan;
-    out.insert(out.end(), {rmin, rmin_exact, std::abs(rmin / rmin_exact - 1.0)});
+    out.insert(out.end(), {rmin, rmin_exact, relative_error(rmin, rmin_exact)});
     return out;
   }
 

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "reference/compared_columns.h"
+#include "reference/radial_curves.h"
 #include "reference/radial_profile.h"
 #include "reference/sedov_solution.h"
 
@@ -12,12 +14,13 @@ class SedovReference final : public Reference {
  public:
   explicit SedovReference(const SedovSetup& s) : s_(s), sol_(s.dim, s.gamma) {}
   std::vector<RefColumn> columns() const override {
-    return {{"R", "shock radius from the particles: where the shell-mean density falls half way from its peak to rho1 [length]", false},
-            {"R_exact", "self-similar radius xi0 (E t^2/rho1)^(1/(d+2)) [length]", false},
-            {"R_err", "|R / R_exact - 1|", true},
-            {"rho_peak", "largest shell-mean density (exact: (gamma+1)/(gamma-1) rho1 at the shock) [mass/length^d]", false},
-            {"L1_rho", "mean |rho - rho_exact(r)| over the particles with r < 1.25 R_exact [mass/length^d]", true},
-            {"dE_rel", "|E(t)/E(0) - 1|, E = sum m (u + v^2/2), E(0) = E_blast + sum m u_ambient", true}};
+    std::vector<RefColumn> c = compared_columns(
+        "R", "shock radius from the particles: where the shell-mean density falls half way from its peak to rho1 [length]",
+        "self-similar radius xi0 (E t^2/rho1)^(1/(d+2)) [length]");
+    append_columns(c, {{"rho_peak", "largest shell-mean density (exact: (gamma+1)/(gamma-1) rho1 at the shock) [mass/length^d]", false},
+                       {"L1_rho", "mean |rho - rho_exact(r)| over the particles with r < 1.25 R_exact [mass/length^d]", true},
+                       {"dE_rel", "|E(t)/E(0) - 1|, E = sum m (u + v^2/2), E(0) = E_blast + sum m u_ambient", true}});
+    return c;
   }
   std::vector<double> evaluate(const Particles& p, double t) const override {
     const std::size_t n = p.fluid();
@@ -42,7 +45,7 @@ class SedovReference final : public Reference {
       l1 += std::abs(p[Field::Density][i] - sol_.state(r, t, s_.E, s_.rho1).rho);
       ++count;
     }
-    return {R, R_exact, std::abs(R / R_exact - 1.0), profile_peak(prof, 3).value, count ? l1 / count : 0.0, dE};
+    return {R, R_exact, relative_error(R, R_exact), profile_peak(prof, 3).value, count ? l1 / count : 0.0, dE};
   }
   std::string description() const override {
     return "Sedov-Taylor blast (d = " + std::to_string(s_.dim) + ", gamma = " + std::to_string(s_.gamma) +
@@ -54,22 +57,17 @@ class SedovReference final : public Reference {
   std::vector<std::pair<int, int>> series() const override { return {{0, 1}}; }
   /// rho, |v| and P against r out to 1.5 R (axis 3: the distance from the origin).
   ReferenceCurves curves(const Domain&, double t) const override {
-    ReferenceCurves c;
-    if (!(t > 0.0)) return c;
+    if (!(t > 0.0)) return {};
     const double R = sol_.shock_radius(s_.E, s_.rho1, t);
-    ExactCurve rho{"rho", {}, {}, 3}, speed{"speed", {}, {}, 3}, P{"p", {}, {}, 3};
+    RadialCurves rc;
     auto add = [&](double r) {
       const SedovSolution::State q = sol_.state(r, t, s_.E, s_.rho1);
-      for (ExactCurve* e : {&rho, &speed, &P}) e->x.push_back(static_cast<float>(r));
-      rho.value.push_back(static_cast<float>(q.rho));
-      speed.value.push_back(static_cast<float>(q.v));
-      P.value.push_back(static_cast<float>(r < R ? q.P : (s_.gamma - 1.0) * s_.rho1 * s_.u_ambient));
+      rc.add(r, q.rho, q.v, r < R ? q.P : (s_.gamma - 1.0) * s_.rho1 * s_.u_ambient);
     };
     for (int k = 0; k < 400; ++k) add(R * k / 400.0);
     add(R * (1.0 - 1e-7));  // the jump: the post-shock state, then the ambient gas
     for (int k = 0; k <= 50; ++k) add(R * (1.0 + 0.5 * k / 50.0));
-    c.profiles = {std::move(rho), std::move(speed), std::move(P)};
-    return c;
+    return rc.take();
   }
 
  private:

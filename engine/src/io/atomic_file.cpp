@@ -49,6 +49,20 @@ bool is_special(const std::filesystem::path& path) {
   return ::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode);
 }
 
+/// Puts a finished temporary in place: the write's error `err` (0: none), then fsync, close and the rename of
+/// `tmp` onto `path`; on any failure the temporary is removed. "" or the message of the first failure.
+std::string seal(int fd, int err, const std::filesystem::path& tmp, const std::filesystem::path& path) {
+  if (!err && ::fsync(fd) != 0 && errno != EINVAL) err = errno;
+  if (::close(fd) != 0 && !err) err = errno;
+  if (!err && ::rename(tmp.c_str(), path.c_str()) != 0) err = errno;
+  if (err) {
+    ::unlink(tmp.c_str());
+    return failure(path, err);
+  }
+  sync_parent(path);
+  return {};
+}
+
 }  // namespace
 
 std::uint32_t crc32_of(std::string_view bytes, std::uint32_t crc) {
@@ -74,16 +88,7 @@ std::string write_file_atomic(const std::filesystem::path& path, std::string_vie
   const std::filesystem::path tmp = path.string() + ".tmp." + std::to_string(::getpid());
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) return failure(path, errno);
-  int err = write_all(fd, bytes);
-  if (!err && ::fsync(fd) != 0 && errno != EINVAL) err = errno;
-  if (::close(fd) != 0 && !err) err = errno;
-  if (!err && ::rename(tmp.c_str(), path.c_str()) != 0) err = errno;
-  if (err) {
-    ::unlink(tmp.c_str());
-    return failure(path, err);
-  }
-  sync_parent(path);
-  return {};
+  return seal(fd, write_all(fd, bytes), tmp, path);
 }
 
 // ---- GrowingFile -----------------------------------------------------------------------------------
@@ -143,18 +148,11 @@ std::string GrowingFile::flush() {
 
 std::string GrowingFile::finish() {
   if (fd_ < 0) return error("not open");
-  int err = write_all(fd_, buffer_);
+  const int err = write_all(fd_, buffer_);
   buffer_.clear();
-  if (!err && ::fsync(fd_) != 0 && errno != EINVAL) err = errno;
-  if (::close(fd_) != 0 && !err) err = errno;
+  const int fd = fd_;
   fd_ = -1;
-  if (!err && ::rename(part_.c_str(), path_.c_str()) != 0) err = errno;
-  if (err) {
-    ::unlink(part_.c_str());
-    return failure(path_, err);
-  }
-  sync_parent(path_);
-  return {};
+  return seal(fd, err, part_, path_);
 }
 
 void GrowingFile::abandon() {

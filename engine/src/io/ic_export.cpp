@@ -5,17 +5,14 @@
 #include <cstdio>
 #include <numbers>
 
+#include "core/number_text.h"
 #include "io/export_box.h"
 #include "sph/kernel.h"
 
 namespace sph {
 namespace {
 
-std::string num(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  return buf;
-}
+std::string num(double v) { return g_text(v, 10); }
 
 /// SWIFT's H/h per kernel and dimension (Dehnen & Aly 2012, MNRAS 425, 1068, Table 1; SWIFT's
 /// src/kernel_hydro.h uses the same numbers). 0 where SWIFT has no such kernel (Wendland in 1D).
@@ -80,11 +77,7 @@ struct Target {
 
 std::string swift_file(const World& world, const std::string& ic_file, std::vector<std::string>* w) {
   const Target t(world, IcFormat::Swift, w);
-  const Params& prm = t.prm;
-  const UnitSystem& u = t.u;
-  const int dim = t.dim;
-  const bool nbody = t.nbody;
-  const KernelMapping& km = t.km;
+  const auto& [prm, u, dim, nbody, kernel, km, box] = t;
   std::string configure = "./configure --with-hydro-dimension=" + std::to_string(dim);
   if (!nbody) {
     configure += " --with-kernel=" + km.name + " --with-hydro=minimal";
@@ -113,8 +106,8 @@ std::string swift_file(const World& world, const std::string& ic_file, std::vect
        "\n  delta_time: " + num(dt_out) + "\n\nStatistics:\n  delta_time: " + num(dt_out / 10.0) + "\n\n";
   if (!nbody) {
     // the same support radius in units of the particle spacing: H = support eta dx = gamma_K eta_swift dx
-    s += "SPH:\n  resolution_eta:  " + num(t.kernel.support() * t.eta() / km.ratio) + "   # this code's kernel.eta = " +
-         num(t.eta()) + ", support " + num(t.kernel.support()) + " h\n  CFL_condition:   " + num(prm.time.cfl) +
+    s += "SPH:\n  resolution_eta:  " + num(kernel.support() * t.eta() / km.ratio) + "   # this code's kernel.eta = " +
+         num(t.eta()) + ", support " + num(kernel.support()) + " h\n  CFL_condition:   " + num(prm.time.cfl) +
          "\n  h_relative_tolerance: " + num(prm.h.tol) + "\n";
     if (prm.physics.viscosity == ViscType::Monaghan)
       s += "  viscosity_alpha: " + num(prm.visc.alpha) + "   # beta = 2 alpha in SWIFT; this code's visc.beta = " +
@@ -130,18 +123,14 @@ std::string swift_file(const World& world, const std::string& ic_file, std::vect
          "\n  comoving_DM_softening:         " + num(eps) + "\n  comoving_baryon_softening:     " + num(eps) +
          "\n\nPhysicalConstants:\n  G: " + num(prm.gravity.G) + "\n\n";
   }
-  s += "InitialConditions:\n  file_name: ./" + ic_file + "\n  periodic:  " + std::string(t.box.periodic ? "1" : "0") +
+  s += "InitialConditions:\n  file_name: ./" + ic_file + "\n  periodic:  " + std::string(box.periodic ? "1" : "0") +
        "\n";
   return s;
 }
 
 /// GADGET-4's Config.sh options for the target, one a line (a warning when a periodic box is not a cube).
 std::string gadget4_config(const Target& t, std::vector<std::string>* w) {
-  const Params& prm = t.prm;
-  const int dim = t.dim;
-  const bool nbody = t.nbody;
-  const KernelMapping& km = t.km;
-  const ExportBox& box = t.box;
+  const auto& [prm, u, dim, nbody, kernel, km, box] = t;
   if (box.periodic) {
     bool cube = true;
     for (int k = 1; k < dim; ++k) cube = cube && std::abs(box.size[k] - box.size[0]) <= 1e-12 * box.size[0];
@@ -163,10 +152,7 @@ std::string gadget4_config(const Target& t, std::vector<std::string>* w) {
 
 std::string gadget4_file(const World& world, const std::string& ic_file, std::vector<std::string>* w) {
   const Target t(world, IcFormat::Gadget4, w);
-  const Params& prm = t.prm;
-  const UnitSystem& u = t.u;
-  const int dim = t.dim;
-  const ExportBox& box = t.box;
+  const auto& [prm, u, dim, nbody, kernel, km, box] = t;
   const std::string config = gadget4_config(t, w);
   std::string s = "% GADGET-4 parameter file for " + ic_file + ", written by `sph export-ics " + world.config().scene->name +
                   " --format gadget4`.\n% Compile GADGET-4 with these Config.sh options:\n";
@@ -219,7 +205,7 @@ std::string gadget4_file(const World& world, const std::string& ic_file, std::ve
   line("TopNodeFactor", "2.5");
   line("ActivePartFracForNewDomainDecomp", "0.01");
   // neighbours inside the support radius H = support eta dx on a lattice: V_d (support eta)^d
-  line("DesNumNgb", num(std::round(ball_volume(dim) * std::pow(t.kernel.support() * t.eta(), dim))));
+  line("DesNumNgb", num(std::round(ball_volume(dim) * std::pow(kernel.support() * t.eta(), dim))));
   line("MaxNumNgbDeviation", dim == 1 ? "0.1" : "1");
   line("UnitLength_in_cm", num(u.length_cgs));
   line("UnitMass_in_g", num(u.mass_cgs));

@@ -9,6 +9,7 @@
 #include <numeric>
 
 #include "lesson_metric.h"
+#include "lesson_sets_text.h"
 #include "sph/world.h"
 #include "text/number_text.h"
 
@@ -41,17 +42,9 @@ double total_variation_vx(const World& w) {
   return tv;
 }
 
-std::string num(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.4g", v);
-  return b;
-}
+std::string num(double v) { return g_text(v, 4); }
 
-std::string sets_label(const LessonSets& sets) {
-  std::string s;
-  for (const auto& [k, v] : sets) s += (s.empty() ? "" : ",") + k + "=" + v;
-  return s.empty() ? "defaults" : s;
-}
+std::string sets_label(const LessonSets& sets) { return lessons::join_sets(sets, ",", "defaults"); }
 
 }  // namespace
 

@@ -1,22 +1,14 @@
 // Lessons as text (`sph lesson show`, the GUI's claim line).
-#include <cstdio>
-
+#include "core/number_text.h"
+#include "lesson_sets_text.h"
 #include "sph/lesson.h"
 
 namespace sph {
 namespace {
 
-std::string num(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%g", v);
-  return b;
-}
+std::string num(double v) { return g_text(v, 6); }
 
-std::string sets_text(const LessonSets& sets) {
-  std::string s;
-  for (const auto& [k, v] : sets) s += (s.empty() ? "" : " ") + k + "=" + v;
-  return s.empty() ? "(defaults)" : s;
-}
+std::string sets_text(const LessonSets& sets) { return lessons::join_sets(sets, " ", "(defaults)"); }
 
 }  // namespace
 
