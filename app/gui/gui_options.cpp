@@ -8,6 +8,47 @@
 
 namespace sph::gui {
 
+namespace {
+
+/// The test hooks' and --record-size's syntax: 2 after a message on the first malformed one, else -1.
+int check_syntax(const GuiOptions& o) {
+  for (const std::string& t : o.tap_keys) {
+    const auto colon = t.find(':');
+    if (colon == std::string::npos || colon == 0 || t.find_first_not_of("0123456789") != colon) {
+      std::fprintf(stderr, "sph-gui: --tap-keys %s: expected FRAME:KEYS, e.g. 5:SSS\n", t.c_str());
+      return 2;
+    }
+  }
+  for (const std::string& c : o.click_particles) {
+    const auto colon = c.find(':');
+    if (colon == std::string::npos || colon == 0 || colon + 1 == c.size() ||
+        c.find_first_not_of("0123456789:") != std::string::npos || c.find(':', colon + 1) != std::string::npos) {
+      std::fprintf(stderr, "sph-gui: --click-particle %s: expected FRAME:ID, e.g. 20:300\n", c.c_str());
+      return 2;
+    }
+  }
+  for (const std::string& d : o.push_drags) {
+    long long f0 = 0, f1 = 0;
+    double x[4];
+    char tail = 0;
+    if (std::sscanf(d.c_str(), "%lld:%lld:%lf,%lf:%lf,%lf%c", &f0, &f1, &x[0], &x[1], &x[2], &x[3], &tail) != 6 ||
+        f0 < 0 || f1 <= f0) {
+      std::fprintf(stderr, "sph-gui: --push-drag %s: expected F0:F1:X0,Y0:X1,Y1 with F0 < F1, e.g. 30:90:0.2,0.4:0.45,0.4\n",
+                   d.c_str());
+      return 2;
+    }
+  }
+  int w = 0, h = 0;
+  if (!parse_size(o.record_size, &w, &h) || w % 2 || h % 2) {
+    std::fprintf(stderr, "sph-gui: --record-size %s: expected even WIDTHxHEIGHT, e.g. 1280x720\n",
+                 o.record_size.c_str());
+    return 2;
+  }
+  return -1;
+}
+
+}  // namespace
+
 bool parse_size(const std::string& text, int* w, int* h) { return render::parse_frame_size(text, w, h); }
 
 int parse_options(int argc, char** argv, GuiOptions* out) {
@@ -74,39 +115,7 @@ int parse_options(int argc, char** argv, GuiOptions* out) {
     std::fprintf(stderr, "sph-gui: --size %s: expected WIDTHxHEIGHT, e.g. 1600x900\n", size.c_str());
     return 2;
   }
-  for (const std::string& t : o.tap_keys) {
-    const auto colon = t.find(':');
-    if (colon == std::string::npos || colon == 0 || t.find_first_not_of("0123456789") != colon) {
-      std::fprintf(stderr, "sph-gui: --tap-keys %s: expected FRAME:KEYS, e.g. 5:SSS\n", t.c_str());
-      return 2;
-    }
-  }
-  for (const std::string& c : o.click_particles) {
-    const auto colon = c.find(':');
-    if (colon == std::string::npos || colon == 0 || colon + 1 == c.size() ||
-        c.find_first_not_of("0123456789:") != std::string::npos || c.find(':', colon + 1) != std::string::npos) {
-      std::fprintf(stderr, "sph-gui: --click-particle %s: expected FRAME:ID, e.g. 20:300\n", c.c_str());
-      return 2;
-    }
-  }
-  for (const std::string& d : o.push_drags) {
-    long long f0 = 0, f1 = 0;
-    double x[4];
-    char tail = 0;
-    if (std::sscanf(d.c_str(), "%lld:%lld:%lf,%lf:%lf,%lf%c", &f0, &f1, &x[0], &x[1], &x[2], &x[3], &tail) != 6 ||
-        f0 < 0 || f1 <= f0) {
-      std::fprintf(stderr, "sph-gui: --push-drag %s: expected F0:F1:X0,Y0:X1,Y1 with F0 < F1, e.g. 30:90:0.2,0.4:0.45,0.4\n",
-                   d.c_str());
-      return 2;
-    }
-  }
-  int w = 0, h = 0;
-  if (!parse_size(o.record_size, &w, &h) || w % 2 || h % 2) {
-    std::fprintf(stderr, "sph-gui: --record-size %s: expected even WIDTHxHEIGHT, e.g. 1280x720\n",
-                 o.record_size.c_str());
-    return 2;
-  }
-  return -1;
+  return check_syntax(o);
 }
 
 }  // namespace sph::gui

@@ -40,17 +40,9 @@ void both_runs(const char* id, const std::string& name, std::vector<float> a, st
              ImVec2(-1.f, height), false);
 }
 
-}  // namespace
-
-void panel_diagnostics(GuiState& s) {
-  const StepperFrame* f = s.frame();
-  if (f == nullptr) return;
-  const Diagnostics& d = f->diagnostics;
-  const auto& h = f->history;
-  const double E0 = h.empty() ? d.E_tot : h.front().E_tot;
-  const double dE = E0 != 0.0 ? (d.E_tot - E0) / std::abs(E0) : d.E_tot - E0;
-  const double P = std::sqrt(d.P[0] * d.P[0] + d.P[1] * d.P[1] + d.P[2] * d.P[2]);
-  const double L = std::sqrt(d.L[0] * d.L[0] + d.L[1] * d.L[1] + d.L[2] * d.L[2]);
+/// The rows of numbers: energies, momenta, fallbacks, the reference's columns, run B's beside A's.
+std::vector<DiagRow> diag_rows(const StepperFrame& f, double dE, double P, double L, bool compare) {
+  const Diagnostics& d = f.diagnostics;
   std::vector<DiagRow> rows;
   add(rows, "E_kin", d.E_kin, 6, "kinetic energy, sum 1/2 m v^2 (seed 000 eq. 3.4.4)");
   add(rows, "E_int", d.E_int, 6, "internal energy of the EOS: sum m u (gas), sum m e(rho) (Tait liquid)");
@@ -63,23 +55,19 @@ void panel_diagnostics(GuiState& s) {
   if (d.correction_fallbacks > 0)
     add(rows, "fallbacks", static_cast<double>(d.correction_fallbacks), 9,
         "particles whose gradient correction was ill-conditioned and fell back to L = I");
-  for (std::size_t k = 0; k < f->ref_columns.size() && k < f->ref_values.size(); ++k)
-    rows.push_back({f->ref_columns[k].name, value_text(f->ref_values[k], 5), f->ref_columns[k].description});
-  const bool compare = f->comparing && f->compare.history.size() == h.size();
+  for (std::size_t k = 0; k < f.ref_columns.size() && k < f.ref_values.size(); ++k)
+    rows.push_back({f.ref_columns[k].name, value_text(f.ref_values[k], 5), f.ref_columns[k].description});
   if (compare) {  // run B's energy and primary error beside A's
-    add(rows, "B E_tot", f->compare.diagnostics.E_tot, 6, "run B's total energy");
-    const std::size_t k = static_cast<std::size_t>(std::max(0, f->ref_primary));
-    if (f->ref_primary >= 0 && k < f->compare.ref_values.size())
-      rows.push_back({"B " + f->ref_columns[k].name, value_text(f->compare.ref_values[k], 5), "run B's error"});
+    add(rows, "B E_tot", f.compare.diagnostics.E_tot, 6, "run B's total energy");
+    const std::size_t k = static_cast<std::size_t>(std::max(0, f.ref_primary));
+    if (f.ref_primary >= 0 && k < f.compare.ref_values.size())
+      rows.push_back({"B " + f.ref_columns[k].name, value_text(f.compare.ref_values[k], 5), "run B's error"});
   }
-  // Columns as wide as their widest text, so that no value runs into the plots.
-  const DiagWidths w = diag_widths(rows, [](const std::string& t) { return ImGui::CalcTextSize(t.c_str()).x; });
-  const float pad = ImGui::GetStyle().CellPadding.x;
-  if (!ImGui::BeginTable("diag", 2, ImGuiTableFlags_SizingStretchProp)) return;
-  ImGui::TableSetupColumn("values", ImGuiTableColumnFlags_WidthFixed, w.name + w.value + 6.f * pad);
-  ImGui::TableSetupColumn("plots", ImGuiTableColumnFlags_WidthStretch);
-  ImGui::TableNextRow();
-  ImGui::TableNextColumn();
+  return rows;
+}
+
+/// The numbers' table: each quantity's name (with its explanation as a tooltip) and value.
+void numbers_table(const std::vector<DiagRow>& rows, const DiagWidths& w) {
   if (ImGui::BeginTable("numbers", 2, ImGuiTableFlags_SizingFixedFit)) {
     ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthFixed, w.name);
     ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthFixed, w.value);
@@ -93,31 +81,37 @@ void panel_diagnostics(GuiState& s) {
     }
     ImGui::EndTable();
   }
-  ImGui::TableNextColumn();
-  const bool err_plot = f->ref_primary >= 0 && static_cast<std::size_t>(f->ref_primary) < f->ref_columns.size();
-  const int n = 3 + (err_plot ? 1 : 0) + static_cast<int>(f->ref_series.size());
+}
+
+/// The curves against t, sharing the column's height: the reference's series, its primary error, the
+/// energies, E_tot and |P| (run B's beside A's when compared).
+void diag_plots(const StepperFrame& f, bool compare, double P) {
+  const Diagnostics& d = f.diagnostics;
+  const auto& h = f.history;
+  const bool err_plot = f.ref_primary >= 0 && static_cast<std::size_t>(f.ref_primary) < f.ref_columns.size();
+  const int n = 3 + (err_plot ? 1 : 0) + static_cast<int>(f.ref_series.size());
   const float text_h = ImGui::GetTextLineHeightWithSpacing();
   const float avail = ImGui::GetContentRegionAvail().y - text_h;
   // readable plots even when a reference brings several (the column scrolls)
   const float ph = std::max(3.5f * text_h, avail / n - ImGui::GetStyle().ItemSpacing.y);
-  for (const auto& [measured, exact] : f->ref_series) {  // e.g. the drop's semi-axes against the exact ODE
-    if (static_cast<std::size_t>(std::max(measured, exact)) >= f->ref_columns.size()) continue;
+  for (const auto& [measured, exact] : f.ref_series) {  // e.g. the drop's semi-axes against the exact ODE
+    if (static_cast<std::size_t>(std::max(measured, exact)) >= f.ref_columns.size()) continue;
     std::vector<Curve> curves;
-    curves.push_back({f->ref_columns[static_cast<std::size_t>(measured)].name, IM_COL32(255, 200, 80, 255),
+    curves.push_back({f.ref_columns[static_cast<std::size_t>(measured)].name, IM_COL32(255, 200, 80, 255),
                       resample_ref(h, static_cast<std::size_t>(measured), 240), false});
-    curves.push_back({f->ref_columns[static_cast<std::size_t>(exact)].name, IM_COL32(120, 200, 255, 255),
+    curves.push_back({f.ref_columns[static_cast<std::size_t>(exact)].name, IM_COL32(120, 200, 255, 255),
                       resample_ref(h, static_cast<std::size_t>(exact), 240), true});
     const std::string id = "series" + std::to_string(measured);
     curve_plot(id.c_str(), "t", h.empty() ? 0.f : static_cast<float>(h.front().t),
                h.empty() ? 1.f : static_cast<float>(h.back().t), curves, ImVec2(-1.f, ph));
   }
   if (err_plot) {
-    const std::size_t k = static_cast<std::size_t>(f->ref_primary);
-    const double now = k < f->ref_values.size() ? f->ref_values[k] : std::nan("");
+    const std::size_t k = static_cast<std::size_t>(f.ref_primary);
+    const double now = k < f.ref_values.size() ? f.ref_values[k] : std::nan("");
     if (compare)
-      both_runs("err", f->ref_columns[k].name, resample_ref(h, k, 240), resample_ref(f->compare.history, k, 240), h, ph);
+      both_runs("err", f.ref_columns[k].name, resample_ref(h, k, 240), resample_ref(f.compare.history, k, 240), h, ph);
     else
-      sparkline("err", h, resample_ref(h, k, 240), plot_title(f->ref_columns[k].name, now, *f), ph);
+      sparkline("err", h, resample_ref(h, k, 240), plot_title(f.ref_columns[k].name, now, f), ph);
   }
   {  // the energies on one set of axes, as seed 003's figures show them (the sparkline below magnifies E_tot)
     const float t0 = h.empty() ? 0.f : static_cast<float>(h.front().t), t1 = h.empty() ? 1.f : static_cast<float>(h.back().t);
@@ -128,18 +122,44 @@ void panel_diagnostics(GuiState& s) {
     if (compare)  // run B's energies dashed, in the same colours
       for (std::size_t c = 0; c < 3; ++c)
         curves.push_back({"B " + curves[c].label, curves[c].color,
-                          resample(f->compare.history, c == 0 ? &HistorySample::E_kin : c == 1 ? &HistorySample::E_int
+                          resample(f.compare.history, c == 0 ? &HistorySample::E_kin : c == 1 ? &HistorySample::E_int
                                                                                                 : &HistorySample::E_pot, 240),
                           true});
     curve_plot("energies", "t", t0, t1, curves, ImVec2(-1.f, ph));
   }
   if (compare)
-    both_runs("E_tot", "E_tot", resample(h, &HistorySample::E_tot, 240), resample(f->compare.history, &HistorySample::E_tot, 240),
+    both_runs("E_tot", "E_tot", resample(h, &HistorySample::E_tot, 240), resample(f.compare.history, &HistorySample::E_tot, 240),
               h, ph);
   else
-    sparkline("E_tot", h, resample(h, &HistorySample::E_tot, 240), plot_title("E_tot", d.E_tot, *f), ph);
-  sparkline("|P|", h, resample(h, &HistorySample::P, 240), plot_title("|P|", P, *f), ph);
+    sparkline("E_tot", h, resample(h, &HistorySample::E_tot, 240), plot_title("E_tot", d.E_tot, f), ph);
+  sparkline("|P|", h, resample(h, &HistorySample::P, 240), plot_title("|P|", P, f), ph);
   if (!h.empty()) ImGui::TextDisabled("against t = %.4g ... %.4g  (%zu samples)", h.front().t, h.back().t, h.size());
+}
+
+}  // namespace
+
+void panel_diagnostics(GuiState& s) {
+  const StepperFrame* f = s.frame();
+  if (f == nullptr) return;
+  const Diagnostics& d = f->diagnostics;
+  const auto& h = f->history;
+  const double E0 = h.empty() ? d.E_tot : h.front().E_tot;
+  const double dE = E0 != 0.0 ? (d.E_tot - E0) / std::abs(E0) : d.E_tot - E0;
+  const double P = std::sqrt(d.P[0] * d.P[0] + d.P[1] * d.P[1] + d.P[2] * d.P[2]);
+  const double L = std::sqrt(d.L[0] * d.L[0] + d.L[1] * d.L[1] + d.L[2] * d.L[2]);
+  const bool compare = f->comparing && f->compare.history.size() == h.size();
+  const std::vector<DiagRow> rows = diag_rows(*f, dE, P, L, compare);
+  // Columns as wide as their widest text, so that no value runs into the plots.
+  const DiagWidths w = diag_widths(rows, [](const std::string& t) { return ImGui::CalcTextSize(t.c_str()).x; });
+  const float pad = ImGui::GetStyle().CellPadding.x;
+  if (!ImGui::BeginTable("diag", 2, ImGuiTableFlags_SizingStretchProp)) return;
+  ImGui::TableSetupColumn("values", ImGuiTableColumnFlags_WidthFixed, w.name + w.value + 6.f * pad);
+  ImGui::TableSetupColumn("plots", ImGuiTableColumnFlags_WidthStretch);
+  ImGui::TableNextRow();
+  ImGui::TableNextColumn();
+  numbers_table(rows, w);
+  ImGui::TableNextColumn();
+  diag_plots(*f, compare, P);
   ImGui::EndTable();
 }
 

@@ -91,15 +91,9 @@ void push_settings(GuiState& s, const StepperFrame& f) {
   if (ImGui::SmallButton("auto##push")) d.radius = d.tau = 0.f;
 }
 
-}  // namespace
 
-void panel_display(GuiState& s) {
-  const StepperFrame* f = s.frame();
-  render::ViewSettings& v = s.view;
-  if (f == nullptr) return;
-  const Snapshot& snap = f->snapshot;
-  const SnapshotField* shown = snap.find(v.color_by);
-  const bool profile = render::draws_profile(snap.dim, v.profile_axis);
+/// The field coloured by (and plotted, in a profile), the colour map, the automatic range's percentiles.
+void colour_controls(render::ViewSettings& v, const Snapshot& snap, const SnapshotField* shown, bool profile) {
   if (ImGui::BeginCombo(profile ? "plot / colour" : "colour by", shown ? shown->label.c_str() : v.color_by.c_str())) {
     for (const SnapshotField& fld : snap.fields)
       if (ImGui::Selectable(fld.label.c_str(), fld.name == v.color_by)) v.color_by = fld.name;
@@ -135,23 +129,90 @@ void panel_display(GuiState& s) {
       v.percentile_hi = to_full ? 100.f : 99.f;
     }
   }
+}
+
+/// Tree-gravity scenes in 2D and 3D: the cells one particle's Barnes-Hut walk opens.
+void tree_cells_toggle(GuiState& s, const Snapshot& snap) {
+  bool on = s.tree_probe >= 0;
+  if (ImGui::Checkbox("tree cells", &on)) s.set_tree_probe(on ? s.tree_probe_pick : -1);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("What the Barnes-Hut tree opens for one particle (white ring) at the current theta:\n"
+                      "blue cells act on it as one multipole each, amber leaves particle by particle.\n"
+                      "Change gravity.theta and watch the cells shrink or grow.");
+  if (on) {
+    int k = s.tree_probe_pick;
+    if (ImGui::InputInt("probe particle", &k)) s.set_tree_probe(std::clamp<std::int64_t>(k, 0, snap.count - 1));
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Index of the particle whose tree walk is drawn (0..N-1)");
+  }
+}
+
+/// Profiles: the exact curve, the rho, v, p, u panels, the dot size.
+void profile_controls(render::ViewSettings& v, const Snapshot& snap) {
+  if (!snap.exact.empty()) {
+    ImGui::Checkbox("exact solution", &v.show_exact);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("The scene's exact or reference curve of the plotted field along this axis, if it has one");
+  }
+  std::vector<std::string> four;  // rho, v, p, u: those this scene has
+  for (const char* name : {"rho", "v", "p", "u"})
+    if (snap.find(render::panel_fields(snap, {name}).front())) four.emplace_back(name);
+  bool panels = !v.panels.empty();
+  if (four.size() > 1 && ImGui::Checkbox("panels: rho, v, p, u", &panels)) v.panels = panels ? four : std::vector<std::string>{};
+  if (four.size() > 1 && ImGui::IsItemHovered())
+    ImGui::SetTooltip("One profile per field with its exact curve, as the seed documents show shock tubes;\n"
+                      "the dots keep the colour of the colour-by field.");
+  ImGui::SliderFloat("dot size", &v.point_px, 1.f, 8.f, "%.1f px");
+}
+
+/// The plane or 3D view: particle size, walls and outlines, the camera, the push's settings (2D).
+void particle_controls(GuiState& s, const StepperFrame& f, render::ViewSettings& v) {
+  const Snapshot& snap = f.snapshot;
+  bool by_h = v.size_mode == render::SizeMode::Smoothing;
+  if (ImGui::Checkbox("size from h", &by_h))
+    v.size_mode = by_h ? render::SizeMode::Smoothing : render::SizeMode::Pixels;
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(-1.f);
+  if (by_h)
+    ImGui::SliderFloat("##hs", &v.h_scale, 0.05f, 2.f, "radius %.2f h");
+  else
+    ImGui::SliderFloat("##px", &v.point_px, 0.5f, 10.f, "radius %.1f px");
+  overlay_toggles(snap, v);
+  if (ImGui::Button("Fit view")) {
+    v.camera2d = render::Camera2D{};
+    v.orbit = render::OrbitCamera{};
+  }
+  ImGui::SameLine();
+  ImGui::TextDisabled(snap.dim == 2 ? "drag: pan, right drag: push, wheel: zoom" : "drag: orbit, wheel: zoom");
+  if (snap.dim == 2) push_settings(s, f);
+}
+
+/// Projector mode: the whole UI's scale (ui_look.h, applied by the main loop between frames) and theme.
+void ui_look_controls(GuiState& s) {
+  float scale = s.look.scale;
+  if (ImGui::SliderFloat("UI scale", &scale, kUiScaleMin, kUiScaleMax, "%.2f x")) s.look.scale = step_ui_scale(scale, 0);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Projector mode: every panel's text and widgets at this scale (Ctrl+= / Ctrl+-, Ctrl+0: 1x);\n"
+                      "the font is rasterised at the new size. %s", s.look_text.c_str());
+  ImGui::SameLine();
+  ImGui::Checkbox("high contrast", &s.look.high_contrast);
+}
+
+}  // namespace
+
+void panel_display(GuiState& s) {
+  const StepperFrame* f = s.frame();
+  render::ViewSettings& v = s.view;
+  if (f == nullptr) return;
+  const Snapshot& snap = f->snapshot;
+  const SnapshotField* shown = snap.find(v.color_by);
+  const bool profile = render::draws_profile(snap.dim, v.profile_axis);
+  colour_controls(v, snap, shown, profile);
   if (render::Trails::applies(snap)) {
     ImGui::Checkbox("orbit trails", &v.show_trails);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Each body's path so far (restarts on reset)");
   }
-  if (f->config.params.physics.gravity == GravityType::Tree && snap.dim >= 2 && !profile && snap.count > 0) {
-    bool on = s.tree_probe >= 0;
-    if (ImGui::Checkbox("tree cells", &on)) s.set_tree_probe(on ? s.tree_probe_pick : -1);
-    if (ImGui::IsItemHovered())
-      ImGui::SetTooltip("What the Barnes-Hut tree opens for one particle (white ring) at the current theta:\n"
-                        "blue cells act on it as one multipole each, amber leaves particle by particle.\n"
-                        "Change gravity.theta and watch the cells shrink or grow.");
-    if (on) {
-      int k = s.tree_probe_pick;
-      if (ImGui::InputInt("probe particle", &k)) s.set_tree_probe(std::clamp<std::int64_t>(k, 0, snap.count - 1));
-      if (ImGui::IsItemHovered()) ImGui::SetTooltip("Index of the particle whose tree walk is drawn (0..N-1)");
-    }
-  }
+  if (f->config.params.physics.gravity == GravityType::Tree && snap.dim >= 2 && !profile && snap.count > 0)
+    tree_cells_toggle(s, snap);
   ImGui::Checkbox("log10 scale", &v.log_scale);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("Colour (and the profile's y axis) by log10 of the field: for densities spanning decades\n"
@@ -164,49 +225,10 @@ void panel_display(GuiState& s) {
     }
   }
   if (snap.dim >= 2) panel_view_kind(v, snap.dim);
-  if (profile) {
-    if (!snap.exact.empty()) {
-      ImGui::Checkbox("exact solution", &v.show_exact);
-      if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("The scene's exact or reference curve of the plotted field along this axis, if it has one");
-    }
-    std::vector<std::string> four;  // rho, v, p, u: those this scene has
-    for (const char* name : {"rho", "v", "p", "u"})
-      if (snap.find(render::panel_fields(snap, {name}).front())) four.emplace_back(name);
-    bool panels = !v.panels.empty();
-    if (four.size() > 1 && ImGui::Checkbox("panels: rho, v, p, u", &panels)) v.panels = panels ? four : std::vector<std::string>{};
-    if (four.size() > 1 && ImGui::IsItemHovered())
-      ImGui::SetTooltip("One profile per field with its exact curve, as the seed documents show shock tubes;\n"
-                        "the dots keep the colour of the colour-by field.");
-    ImGui::SliderFloat("dot size", &v.point_px, 1.f, 8.f, "%.1f px");
-  } else {
-    bool by_h = v.size_mode == render::SizeMode::Smoothing;
-    if (ImGui::Checkbox("size from h", &by_h))
-      v.size_mode = by_h ? render::SizeMode::Smoothing : render::SizeMode::Pixels;
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(-1.f);
-    if (by_h)
-      ImGui::SliderFloat("##hs", &v.h_scale, 0.05f, 2.f, "radius %.2f h");
-    else
-      ImGui::SliderFloat("##px", &v.point_px, 0.5f, 10.f, "radius %.1f px");
-    overlay_toggles(snap, v);
-    if (ImGui::Button("Fit view")) {
-      v.camera2d = render::Camera2D{};
-      v.orbit = render::OrbitCamera{};
-    }
-    ImGui::SameLine();
-    ImGui::TextDisabled(snap.dim == 2 ? "drag: pan, right drag: push, wheel: zoom" : "drag: orbit, wheel: zoom");
-    if (snap.dim == 2) push_settings(s, *f);
-  }
+  if (profile) profile_controls(v, snap);
+  else particle_controls(s, *f, v);
   ImGui::SliderInt("text size", &v.text_scale, 0, 4, v.text_scale == 0 ? "auto" : "%d x");
-  // projector mode: the whole UI (ui_look.h), applied by the main loop between frames
-  float scale = s.look.scale;
-  if (ImGui::SliderFloat("UI scale", &scale, kUiScaleMin, kUiScaleMax, "%.2f x")) s.look.scale = step_ui_scale(scale, 0);
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("Projector mode: every panel's text and widgets at this scale (Ctrl+= / Ctrl+-, Ctrl+0: 1x);\n"
-                      "the font is rasterised at the new size. %s", s.look_text.c_str());
-  ImGui::SameLine();
-  ImGui::Checkbox("high contrast", &s.look.high_contrast);
+  ui_look_controls(s);
 }
 
 }  // namespace sph::gui

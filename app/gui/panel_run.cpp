@@ -38,62 +38,26 @@ void scrub_slider(GuiState& s) {
   s.scrub = k == n - 1 ? -1 : k;
 }
 
-}  // namespace
-
-void panel_run(GuiState& s) {
-  const StepperFrame* f = s.frame();
-  const bool running = f && f->running;
-  const float bw = (ImGui::GetContentRegionAvail().x - 2.f * ImGui::GetStyle().ItemSpacing.x) / 3.f;
-  if (ImGui::Button(running ? "Pause" : "Play", ImVec2(bw, 0))) running ? s.pause() : s.resume();
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Space (at t_end with 'stop at t_end': replay from t = 0)");
-  ImGui::SameLine();
-  if (ImGui::Button("Step", ImVec2(bw, 0))) s.step_once();
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Pause and advance exactly one step (S)");
-  ImGui::SameLine();
-  const std::vector<std::string> pending = s.pending();
-  if (!pending.empty()) ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.65f, 0.40f, 0.08f, 1.f));
-  if (ImGui::Button(pending.empty() ? "Reset" : "Reset*", ImVec2(bw, 0))) s.reset();
-  if (!pending.empty()) ImGui::PopStyleColor();
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("Rebuild the scene at t = 0 with the current parameters and scene values (R)");
-  for (const std::string& p : pending) ImGui::TextColored(ImVec4(1.f, 0.7f, 0.3f, 1.f), "needs reset: %s", p.c_str());
-
-  // Keyboard shortcuts (when no text field has the keyboard), from the key events of this frame in
-  // order, so that quick taps are never lost. GLFW's letter keys are their upper-case ASCII codes.
-  if (!ImGui::GetIO().WantCaptureKeyboard) {
-    bool run = running;
-    for (const int key : s.key_presses) {
-      if (key == GLFW_KEY_SPACE) {
-        run ? s.pause() : s.resume();
-        run = !run;
-      } else if (key == GLFW_KEY_S) {
-        s.step_once();
-        run = false;
-      } else if (key == GLFW_KEY_R) {
-        s.reset();
-      }
+/// Keyboard shortcuts (when no text field has the keyboard), from the key events of this frame in
+/// order, so that quick taps are never lost. GLFW's letter keys are their upper-case ASCII codes.
+void run_keys(GuiState& s, bool running) {
+  if (ImGui::GetIO().WantCaptureKeyboard) return;
+  bool run = running;
+  for (const int key : s.key_presses) {
+    if (key == GLFW_KEY_SPACE) {
+      run ? s.pause() : s.resume();
+      run = !run;
+    } else if (key == GLFW_KEY_S) {
+      s.step_once();
+      run = false;
+    } else if (key == GLFW_KEY_R) {
+      s.reset();
     }
   }
+}
 
-  scrub_slider(s);
-  bool realtime = s.real_time_factor > 0.0;
-  if (ImGui::Checkbox("real time x", &realtime)) s.set_real_time_factor(realtime ? 0.1 : 0.0);
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Pace the engine: simulated seconds per wall-clock second.\nOff: as fast as possible.");
-  ImGui::SameLine();
-  if (!realtime) ImGui::BeginDisabled();
-  double rtf = realtime ? s.real_time_factor : 0.1;
-  ImGui::SetNextItemWidth(-1.f);
-  const double lo = 1e-4, hi = 10.0;
-  if (ImGui::SliderScalar("##rtf", ImGuiDataType_Double, &rtf, &lo, &hi, "%.4g sim s / s",
-                          ImGuiSliderFlags_Logarithmic) && realtime)
-    s.set_real_time_factor(rtf);
-  if (!realtime) ImGui::EndDisabled();
-  bool stop = s.stop_at_end;
-  if (ImGui::Checkbox("stop at t_end", &stop)) s.set_stop_at_end(stop);
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("Pause when t reaches the t_end parameter; Play there replays from t = 0.\n"
-                      "Untick (or raise t_end) to run on.");
-
+/// The screenshot button and the PNG-sequence recording with its settings (folder, interval, size).
+void picture_controls(GuiState& s) {
   if (ImGui::Button("Screenshot")) s.requests.screenshot = true;
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("The whole window as a PNG in the working directory (F12)");
   ImGui::SameLine();
@@ -120,6 +84,48 @@ void panel_run(GuiState& s) {
   }
   if (s.recording) ImGui::EndDisabled();
   ImGui::TreePop();
+}
+
+}  // namespace
+
+void panel_run(GuiState& s) {
+  const StepperFrame* f = s.frame();
+  const bool running = f && f->running;
+  const float bw = (ImGui::GetContentRegionAvail().x - 2.f * ImGui::GetStyle().ItemSpacing.x) / 3.f;
+  if (ImGui::Button(running ? "Pause" : "Play", ImVec2(bw, 0))) running ? s.pause() : s.resume();
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Space (at t_end with 'stop at t_end': replay from t = 0)");
+  ImGui::SameLine();
+  if (ImGui::Button("Step", ImVec2(bw, 0))) s.step_once();
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Pause and advance exactly one step (S)");
+  ImGui::SameLine();
+  const std::vector<std::string> pending = s.pending();
+  if (!pending.empty()) ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.65f, 0.40f, 0.08f, 1.f));
+  if (ImGui::Button(pending.empty() ? "Reset" : "Reset*", ImVec2(bw, 0))) s.reset();
+  if (!pending.empty()) ImGui::PopStyleColor();
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Rebuild the scene at t = 0 with the current parameters and scene values (R)");
+  for (const std::string& p : pending) ImGui::TextColored(ImVec4(1.f, 0.7f, 0.3f, 1.f), "needs reset: %s", p.c_str());
+  run_keys(s, running);
+  scrub_slider(s);
+  bool realtime = s.real_time_factor > 0.0;
+  if (ImGui::Checkbox("real time x", &realtime)) s.set_real_time_factor(realtime ? 0.1 : 0.0);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Pace the engine: simulated seconds per wall-clock second.\nOff: as fast as possible.");
+  ImGui::SameLine();
+  if (!realtime) ImGui::BeginDisabled();
+  double rtf = realtime ? s.real_time_factor : 0.1;
+  ImGui::SetNextItemWidth(-1.f);
+  const double lo = 1e-4, hi = 10.0;
+  if (ImGui::SliderScalar("##rtf", ImGuiDataType_Double, &rtf, &lo, &hi, "%.4g sim s / s",
+                          ImGuiSliderFlags_Logarithmic) && realtime)
+    s.set_real_time_factor(rtf);
+  if (!realtime) ImGui::EndDisabled();
+  bool stop = s.stop_at_end;
+  if (ImGui::Checkbox("stop at t_end", &stop)) s.set_stop_at_end(stop);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Pause when t reaches the t_end parameter; Play there replays from t = 0.\n"
+                      "Untick (or raise t_end) to run on.");
+
+  picture_controls(s);
 }
 
 }  // namespace sph::gui

@@ -1,0 +1,41 @@
+// The frames of `sph run --frames` (the headless-render build): the frame flags checked against the scene's
+// fields and the recorder opened before anything is written, each frame (run B's beside run A's in a
+// comparison) written when due, and the video made at the end.
+#pragma once
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "cli_compare.h"
+#include "cli_run.h"
+#include "frame_recorder.h"
+#include "sph/snapshot.h"
+
+namespace sph::cli {
+
+class RunFrames {
+ public:
+  /// Checks the frame flags against world's fields and opens the recorder (none without --frames):
+  /// ConfigError names a bad flag, IoError a frame folder that cannot be made.
+  RunFrames(const RunOptions& opt, const RunConfig& cfg, const World& world);
+
+  bool active() const { return rec_ != nullptr; }
+  /// The simulated time at which the next frame is due.
+  double next_time() const { return next_frame_ * opt_.every; }
+  /// Counts the next frame as passed (the world stepped beyond its time).
+  void advance() { ++next_frame_; }
+  /// Writes the frame of world now (with run B, compared); IoError when it cannot be written.
+  void write(const World& world, const World* b, const std::optional<CompareSetup>& compare);
+  /// Waits for the PNG files, prints where they are and makes the video (--video): kOk, or kIoError
+  /// when the video cannot be made; IoError when a frame cannot be written.
+  int finish();
+
+ private:
+  const RunOptions& opt_;
+  std::unique_ptr<FrameRecorder> rec_;
+  int next_frame_ = 1;
+  std::string err_;
+  Snapshot snap_, snap_b_;  // what the last frame showed
+};
+
+}  // namespace sph::cli

@@ -1,0 +1,46 @@
+// The end-of-run report of `sph run`: the summary line with the reference's values, and the warnings.
+#include "run_report.h"
+
+#include <omp.h>
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "sph/thread_wait.h"
+
+namespace sph::cli {
+
+void print_warnings(const World& world) {
+  if (world.checks().warnings().empty()) return;
+  std::fprintf(stderr, "warnings (%zu):\n", world.checks().warnings().size());
+  for (const RunWarning& w : world.checks().warnings())
+    std::fprintf(stderr, "  [%s] from step %lld (t = %g, %lld checks): %s\n", w.kind.c_str(),
+                 static_cast<long long>(w.step), w.t, static_cast<long long>(w.times), w.message.c_str());
+}
+
+void print_summary(const RunOptions& opt, const RunConfig& cfg, const World& world, const World* b,
+                   const std::optional<CompareSetup>& compare, double wall) {
+  if (opt.quiet) return;
+  const double psteps = static_cast<double>(world.steps()) * static_cast<double>(world.particles().size());
+  std::printf("%s: t = %g after %lld steps, %zu particles, %.3f s wall, %.3g particle-steps/s, %d threads "
+              "(the last step on %d; idle threads: %s)\n",
+              cfg.scene->name.c_str(), world.time(), static_cast<long long>(world.steps()),
+              world.particles().size(), wall, psteps / wall, omp_get_max_threads(), world.last_team(),
+              thread_wait_policy().c_str());
+  if (world.report().has_reference()) {
+    const auto& cols = world.report().reference_columns();
+    const std::vector<double> vals = world.report().reference_values();
+    std::printf("reference at t = %g (%s):\n", world.time(), world.report().reference()->description().c_str());
+    std::string line;
+    for (std::size_t k = 0; k < cols.size(); ++k) {
+      char item[96];
+      std::snprintf(item, sizeof item, "  %s = %.6g", cols[k].name.c_str(), vals[k]);
+      line += item;
+    }
+    std::printf("%s\n", line.c_str());
+  }
+  if (b) std::printf("%s\n", compare_summary(*b, *compare).c_str());
+}
+
+}  // namespace sph::cli
