@@ -1,5 +1,6 @@
-// A bitmap font for overlay text: Dear ImGui's built-in ProggyClean (13 px), rasterised on the CPU by
-// ImFontAtlas; only printable ASCII is kept. Drawn at integer scales with nearest filtering (crisp).
+// A bitmap font for overlay text: DejaVu Sans Mono (embedded at build time, font_data.h) rasterised on the
+// CPU by stb_truetype at a 13 px line; only printable ASCII is kept. Glyph boxes and advances are whole
+// pixels, so text drawn at integer scales with nearest filtering stays crisp. Same bytes on every run.
 #pragma once
 #include <array>
 #include <cstdint>
