@@ -6,9 +6,11 @@
 
 #include "physics/corrected_kernel.h"
 #include "physics/pair_block.h"
+#include "physics/pair_fields.h"
 #include "physics/pair_terms.h"
 #include "physics/terms/conduction.h"
 #include "physics/terms/visc_terms.h"
+#include "physics/viscous_stress.h"
 
 namespace sph {
 namespace {
@@ -68,8 +70,8 @@ void sum_pairs(const StageContext& c, std::size_t i, bool skip_walls, const Term
   const auto& h = p[Field::H];
   const auto& m = p[Field::Mass];
   const double rho_i = p.has(Field::Density) ? p[Field::Density][i] : std::nan("");
-  std::vector<double> R2(p.total());  // (support h)^2 of every particle, ghosts included [length^2]
-  for (std::size_t k = 0; k < R2.size(); ++k) R2[k] = (c.kernel.support() * h[k]) * (c.kernel.support() * h[k]);
+  std::vector<double> R2;  // (support h)^2 of every particle, ghosts included [length^2]
+  support_radii2(p, c.kernel.support(), R2);
   PairBlock<0> near;
   const std::size_t count = gather_pairs(p, R2.data(), i, c.nl.of(i), skip_walls, near);
   std::array<InspectTerm, kTermCount> sum{};
@@ -146,7 +148,7 @@ void standard(const StageContext& c, std::size_t i, std::vector<InspectTerm>* te
   const bool energy = ph.energy == Toggle::On;
   const terms::Conduction cond(c);
   const bool conduction = cond.on;
-  auto A = [&](std::size_t b) { return grad_h ? P[b] / (p[Field::Omega][b] * rho[b] * rho[b]) : P[b] / (rho[b] * rho[b]); };
+  auto A = [&](std::size_t b) { return pressure_factor(P[b], grad_h ? p[Field::Omega][b] : 1.0, rho[b]); };
   const double Ai = A(i);
   const Active active = {true, ph.viscosity == ViscType::Monaghan, ph.viscosity == ViscType::Laplacian, false, conduction};
   sum_pairs(c, i, ph.walls == WallType::LennardJones, kStandard, active,
@@ -175,41 +177,46 @@ void standard(const StageContext& c, std::size_t i, std::vector<InspectTerm>* te
             terms, nb);
 }
 
-/// The corrected gradients G_a(b) and G_b(a) of a pair (corrected_kernel.h), r = x_a - x_b.
-void corrected_gradients(const StageContext& c, const CorrectionFields& corr, std::size_t i, std::size_t j,
-                         const Vec3& r, double rr, Vec3& Gi, Vec3& Gj) {
-  const auto& h = c.p[Field::H];
-  double Wi, dWi, Wj, dWj;
-  c.kernel.eval(c.kernel.scale(h[i]), rr, Wi, dWi);
-  c.kernel.eval(c.kernel.scale(h[j]), rr, Wj, dWj);
-  const double rv[3] = {r.x, r.y, r.z}, mr[3] = {-r.x, -r.y, -r.z};
-  double gi[3], gj[3];
-  corr.gradient(i, rv, Wi, dWi / rr, gi);
-  corr.gradient(j, mr, Wj, dWj / rr, gj);
-  Gi = {gi[0], gi[1], gi[2]};
-  Gj = {gj[0], gj[1], gj[2]};
-}
+/// The fields the corrected formulations' term splits read, and a pair's corrected gradients.
+struct CorrectedView {
+  const StageContext& c;
+  const std::vector<double>&m, &rho, &P;
+  const CorrectionFields corr;
+  explicit CorrectedView(const StageContext& ctx)
+      : c(ctx), m(ctx.p[Field::Mass]), rho(ctx.p[Field::Density]), P(ctx.p[Field::Pressure]), corr(ctx.p) {}
+
+  /// G_a(b) and G_b(a) of a pair (corrected_kernel.h), r = x_a - x_b.
+  void gradients(std::size_t i, std::size_t j, const Vec3& r, double rr, Vec3& Gi, Vec3& Gj) const {
+    const auto& h = c.p[Field::H];
+    double Wi, dWi, Wj, dWj;
+    c.kernel.eval(c.kernel.scale(h[i]), rr, Wi, dWi);
+    c.kernel.eval(c.kernel.scale(h[j]), rr, Wj, dWj);
+    const double rv[3] = {r.x, r.y, r.z}, mr[3] = {-r.x, -r.y, -r.z};
+    double gi[3], gj[3];
+    corr.gradient(i, rv, Wi, dWi / rr, gi);
+    corr.gradient(j, mr, Wj, dWj / rr, gj);
+    Gi = {gi[0], gi[1], gi[2]};
+    Gj = {gj[0], gj[1], gj[2]};
+  }
+};
 
 // forces_standard_corrected.cpp, term by term.
 void standard_corrected(const StageContext& c, std::size_t i, std::vector<InspectTerm>* terms,
                         std::vector<InspectNeighbour>* nb) {
   const Particles& p = c.p;
   const Physics& ph = c.prm.physics;
-  const auto& m = p[Field::Mass];
-  const auto& rho = p[Field::Density];
-  const auto& P = p[Field::Pressure];
-  const CorrectionFields corr(p);
-  const double Ai = P[i] / (rho[i] * rho[i]);
+  const CorrectedView cv(c);
+  const double Ai = pressure_factor(cv.P[i], 1.0, cv.rho[i]);
   const Active active = {true, ph.viscosity == ViscType::Monaghan, ph.viscosity == ViscType::Laplacian, false, false};
   sum_pairs(c, i, !c.walls_in_sums(), kStandardCorrected, active,
             [&](std::size_t j, const Vec3& r, double rr, PairOut& o) {
               Vec3 Gi, Gj;
-              corrected_gradients(c, corr, i, j, r, rr, Gi, Gj);
+              cv.gradients(i, j, r, rr, Gi, Gj);
               const Vec3 Gm = (Gi - Gj) * 0.5;
-              const double Aj = P[j] / (rho[j] * rho[j]);
+              const double Aj = pressure_factor(cv.P[j], 1.0, cv.rho[j]);
               const Vec3 dv = velocity_difference(p, i, j);
-              o.a[kPressure] = (Gi * Ai - Gj * Aj) * -m[j];
-              o.a[kViscPi] = Gm * (-m[j] * pi_of(c, i, j, dv.dot(r), rr * rr));
+              o.a[kPressure] = (Gi * Ai - Gj * Aj) * -cv.m[j];
+              o.a[kViscPi] = Gm * (-cv.m[j] * pi_of(c, i, j, dv.dot(r), rr * rr));
               if (ph.viscosity == ViscType::Laplacian) o.a[kViscLaplacian] = dv * laplacian_of(c, i, j, r.dot(Gm), rr * rr);
             },
             terms, nb);
@@ -219,22 +226,14 @@ void standard_corrected(const StageContext& c, std::size_t i, std::vector<Inspec
 void corrected(const StageContext& c, std::size_t i, std::vector<InspectTerm>* terms, std::vector<InspectNeighbour>* nb) {
   const Particles& p = c.p;
   const Physics& ph = c.prm.physics;
-  const auto& m = p[Field::Mass];
-  const auto& rho = p[Field::Density];
-  const auto& P = p[Field::Pressure];
-  const CorrectionFields corr(p);
+  const CorrectedView cv(c);
   const int d = p.dim();
   const bool stress = ph.viscosity == ViscType::Laplacian;
   // 2 mu (D - tr D / 3 I) of particle b, row-major 3 x 3 (zero without the Laplacian viscosity)
+  const ViscousStress vstress(p, d, c.prm.visc.nu, stress);
   auto viscous = [&](std::size_t b, double T[9]) {
     std::fill(T, T + 9, 0.0);
-    if (!stress) return;
-    auto g = [&](int k, int l) { return p[component(Field::VelGradXX, k, l)][b]; };
-    const double mu = rho[b] * c.prm.visc.nu;
-    double tr = 0.0;
-    for (int k = 0; k < d; ++k) tr += g(k, k);
-    for (int k = 0; k < d; ++k)
-      for (int l = 0; l < d; ++l) T[3 * k + l] = 2.0 * mu * (0.5 * (g(k, l) + g(l, k)) - (k == l ? tr / 3.0 : 0.0));
+    if (stress) vstress.add(b, cv.rho[b], T);
   };
   double Tvi[9];
   viscous(i, Tvi);
@@ -242,19 +241,19 @@ void corrected(const StageContext& c, std::size_t i, std::vector<InspectTerm>* t
   sum_pairs(c, i, !c.walls_in_sums(), kCorrected, active,
             [&](std::size_t j, const Vec3& r, double rr, PairOut& o) {
               Vec3 Gi, Gj;
-              corrected_gradients(c, corr, i, j, r, rr, Gi, Gj);
+              cv.gradients(i, j, r, rr, Gi, Gj);
               const double gi[3] = {Gi.x, Gi.y, Gi.z}, gj[3] = {Gj.x, Gj.y, Gj.z};
-              const double ri2 = rho[i] * rho[i], rj2 = rho[j] * rho[j];
+              const double ri2 = cv.rho[i] * cv.rho[i], rj2 = cv.rho[j] * cv.rho[j];
               double Tvj[9];
               viscous(j, Tvj);
               double press[3] = {}, visc[3] = {};
               for (int k = 0; k < d; ++k) {
-                press[k] = m[j] * (-P[i] / ri2 * gi[k] + P[j] / rj2 * gj[k]);
-                for (int l = 0; l < d; ++l) visc[k] += m[j] * (Tvi[3 * k + l] / ri2 * gi[l] - Tvj[3 * k + l] / rj2 * gj[l]);
+                press[k] = cv.m[j] * (-cv.P[i] / ri2 * gi[k] + cv.P[j] / rj2 * gj[k]);
+                for (int l = 0; l < d; ++l) visc[k] += cv.m[j] * (Tvi[3 * k + l] / ri2 * gi[l] - Tvj[3 * k + l] / rj2 * gj[l]);
               }
               o.a[kPressure] = {press[0], press[1], press[2]};
               o.a[kViscStress] = {visc[0], visc[1], visc[2]};
-              o.a[kViscPi] = (Gi - Gj) * (-0.5 * m[j] * pi_of(c, i, j, velocity_difference(p, i, j).dot(r), rr * rr));
+              o.a[kViscPi] = (Gi - Gj) * (-0.5 * cv.m[j] * pi_of(c, i, j, velocity_difference(p, i, j).dot(r), rr * rr));
             },
             terms, nb);
 }

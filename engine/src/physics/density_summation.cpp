@@ -92,6 +92,100 @@ Sums sums_at(const Shape& shape, double sigma, int d, Candidates& c, double h) {
   return Sums{sigma * hd * sw, -sigma * hd * hinv * sd};
 }
 
+/// One evaluation's h solve: the fields and settings every particle's solve shares. Volume: rho_a =
+/// m_a sum_b W_ab; SkipWalls: Lennard-Jones wall particles are not in the sums.
+template <bool Volume, bool SkipWalls, class Shape>
+struct HSolve {
+  const StageContext& c;
+  const Shape shape;
+  const std::vector<double>& m;
+  std::vector<double>&rho, &h, &omega, &nneigh, &hiter;
+  const int d;
+  const double eta_d;
+  const bool fixed;
+  const double tol;
+  const int max_iter;
+  const std::vector<double>& h_limit;
+  /// the first guess of the solve: h + dh/dt times the time since the last one (the rate of the last
+  /// force evaluation), inside [h/2, h_limit]
+  const double* hdot;
+  const double since, sigma, support;
+
+  HSolve(StageContext& ctx, const Shape& s, bool fixed_h)
+      : c(ctx), shape(s), m(ctx.p[Field::Mass]), rho(ctx.p[Field::Density]), h(ctx.p[Field::H]),
+        omega(ctx.p[Field::Omega]), nneigh(ctx.p[Field::Neighbours]), hiter(ctx.p[Field::HIterations]),
+        d(ctx.p.dim()), eta_d(std::pow(ctx.eta, d)), fixed(fixed_h), tol(ctx.prm.h.tol),
+        max_iter(ctx.prm.h.max_iter), h_limit(ctx.h_limit),
+        hdot(!fixed && ctx.since > 0.0 && ctx.p.has(Field::HRate) ? ctx.p[Field::HRate].data() : nullptr),
+        since(ctx.since), sigma(ctx.kernel.sigma()), support(ctx.kernel.support()) {}
+
+  /// Particle i's h, rho, Omega, neighbour count and iterations (+1000 if not converged); false if h
+  /// reached its list's limit (h is left there). cand: this thread's scratch.
+  bool particle(std::size_t i, Candidates& cand, std::size_t& bisections) const {
+    const double reach = support * (fixed ? h[i] : h_limit[i]);
+    gather<Volume, SkipWalls>(c.p, i, c.nl.of(i), m, reach * reach, cand);
+    Sums s;
+    double hi = h[i];
+    if (hdot) hi = std::clamp(hi + hdot[i] * since, 0.5 * hi, h_limit[i]);
+    int it = 0;
+    bool converged = true;
+    if (fixed) {
+      s = sums_at(shape, sigma, d, cand, hi);
+    } else {
+      // g(h) = rho(h) - m eta^d / h^d  (seed 000 eq. 3.5.1); g' = drho/dh + d m eta^d / h^(d+1)
+      const NewtonResult r = newton_bracketed(
+          [&](double hh, double& g, double& dg) {
+            s = sums_at(shape, sigma, d, cand, hh);
+            double hd = hh;
+            for (int k = 1; k < d; ++k) hd *= hh;
+            const double target = m[i] * eta_d / hd;
+            g = s.rho - target;
+            dg = s.drho + d * target / hh;
+          },
+          hi, h_limit[i], tol, max_iter);
+      if (r.hit_upper) { h[i] = h_limit[i]; return false; }
+      bisections += static_cast<std::size_t>(r.bisections);
+      it = r.iterations;
+      converged = r.converged;
+      hi = r.x;  // s holds the sums evaluated at r.x (the last evaluation)
+    }
+    h[i] = hi;
+    rho[i] = s.rho;
+    // Omega = 1 - (dh/drho) sum m dW/dh with dh/drho = -h/(rho d)  (seed 000 eqs. 3.3.2, 3.3.4)
+    omega[i] = fixed ? 1.0 : 1.0 + hi / (d * s.rho) * s.drho;
+    nneigh[i] = count_within<Shape>(cand, hi);
+    hiter[i] = it + (converged ? 0.0 : 1000.0);  // > 1000 marks non-converged particles
+    return true;
+  }
+};
+
+/// The solve's statistics from the particles' iteration and neighbour counts; clears the 1000 marks.
+void record_stats(StageContext& c, std::size_t bisections) {
+  Particles& p = c.p;
+  const std::size_t n = p.fluid();
+  auto& nneigh = p[Field::Neighbours];
+  auto& hiter = p[Field::HIterations];
+  double sum_it = 0.0, sum_nb = 0.0;  // sums of integers: exact, so the same for any thread count
+  std::size_t not_converged = 0, first_bad = n;
+  int max_it = 0;
+  DensityStats& stats = c.stats.density;
+  stats = DensityStats{};
+  stats.bisections = bisections;
+#pragma omp parallel for reduction(+ : sum_it, sum_nb, not_converged) reduction(max : max_it) reduction(min : first_bad) if (p.size() >= kParallelMin)
+  for (std::size_t i = 0; i < n; ++i) {
+    int it = static_cast<int>(hiter[i]);
+    if (it >= 1000) { ++not_converged; it -= 1000; hiter[i] = it; first_bad = std::min(first_bad, i); }
+    sum_it += it;
+    max_it = std::max(max_it, it);
+    sum_nb += nneigh[i];
+  }
+  stats.not_converged = not_converged;
+  stats.first_not_converged = first_bad < n ? static_cast<std::int64_t>(p.id[first_bad]) : -1;
+  stats.max_iterations = max_it;
+  stats.mean_iterations = n ? sum_it / n : 0.0;
+  stats.mean_neighbours = n ? sum_nb / n : 0.0;
+}
+
 class DensitySummation final : public Stage {
  public:
   DensitySummation(bool volume, bool fixed) : volume_(volume), fixed_(fixed) {}
@@ -113,90 +207,19 @@ class DensitySummation final : public Stage {
  private:
   template <bool Volume, bool SkipWalls, class Shape>
   bool solve(StageContext& c, const Shape& shape) {
-    const Kernel& K = c.kernel;
-    Particles& p = c.p;
-    const std::size_t n = p.fluid();
-    const int d = p.dim();
-    auto& m = p[Field::Mass];
-    auto& rho = p[Field::Density];
-    auto& h = p[Field::H];
-    auto& omega = p[Field::Omega];
-    auto& nneigh = p[Field::Neighbours];
-    auto& hiter = p[Field::HIterations];
-    const double eta_d = std::pow(c.eta, d);
-    const bool fixed = fixed_;
-    const double tol = c.prm.h.tol;
-    const int max_iter = c.prm.h.max_iter;
-    const auto& h_limit = c.h_limit;
-    // the first guess of the solve: h + dh/dt times the time since the last one (the rate of the last
-    // force evaluation), inside [h/2, h_limit]
-    const double* hdot = !fixed && c.since > 0.0 && p.has(Field::HRate) ? p[Field::HRate].data() : nullptr;
-    const double since = c.since;
+    const std::size_t n = c.p.fluid();
+    const HSolve<Volume, SkipWalls, Shape> hs(c, shape, fixed_);
     int overflow = 0;
     std::size_t bisections = 0;
-
-    const double sigma = K.sigma(), support = K.support();
-#pragma omp parallel reduction(+ : overflow, bisections) if (p.size() >= kParallelMin)
+#pragma omp parallel reduction(+ : overflow, bisections) if (c.p.size() >= kParallelMin)
     {
     Candidates cand;  // this thread's
 #pragma omp for schedule(static)  // the same block per thread in every loop (core/parallel.h)
-    for (std::size_t i = 0; i < n; ++i) {
-      const double reach = support * (fixed ? h[i] : h_limit[i]);
-      gather<Volume, SkipWalls>(p, i, c.nl.of(i), m, reach * reach, cand);
-      Sums s;
-      double hi = h[i];
-      if (hdot) hi = std::clamp(hi + hdot[i] * since, 0.5 * hi, h_limit[i]);
-      int it = 0;
-      bool converged = true;
-      if (fixed) {
-        s = sums_at(shape, sigma, d, cand, hi);
-      } else {
-        // g(h) = rho(h) - m eta^d / h^d  (seed 000 eq. 3.5.1); g' = drho/dh + d m eta^d / h^(d+1)
-        const NewtonResult r = newton_bracketed(
-            [&](double hh, double& g, double& dg) {
-              s = sums_at(shape, sigma, d, cand, hh);
-              double hd = hh;
-              for (int k = 1; k < d; ++k) hd *= hh;
-              const double target = m[i] * eta_d / hd;
-              g = s.rho - target;
-              dg = s.drho + d * target / hh;
-            },
-            hi, h_limit[i], tol, max_iter);
-        if (r.hit_upper) { ++overflow; h[i] = h_limit[i]; continue; }
-        bisections += static_cast<std::size_t>(r.bisections);
-        it = r.iterations;
-        converged = r.converged;
-        hi = r.x;  // s holds the sums evaluated at r.x (the last evaluation)
-      }
-      h[i] = hi;
-      rho[i] = s.rho;
-      // Omega = 1 - (dh/drho) sum m dW/dh with dh/drho = -h/(rho d)  (seed 000 eqs. 3.3.2, 3.3.4)
-      omega[i] = fixed ? 1.0 : 1.0 + hi / (d * s.rho) * s.drho;
-      nneigh[i] = count_within<Shape>(cand, hi);
-      hiter[i] = it + (converged ? 0.0 : 1000.0);  // > 1000 marks non-converged particles
-    }
+    for (std::size_t i = 0; i < n; ++i)
+      if (!hs.particle(i, cand, bisections)) ++overflow;
     }
     if (overflow > 0) return false;
-
-    double sum_it = 0.0, sum_nb = 0.0;  // sums of integers: exact, so the same for any thread count
-    std::size_t not_converged = 0, first_bad = n;
-    int max_it = 0;
-    DensityStats& stats = c.stats.density;
-    stats = DensityStats{};
-    stats.bisections = bisections;
-#pragma omp parallel for reduction(+ : sum_it, sum_nb, not_converged) reduction(max : max_it) reduction(min : first_bad) if (p.size() >= kParallelMin)
-    for (std::size_t i = 0; i < n; ++i) {
-      int it = static_cast<int>(hiter[i]);
-      if (it >= 1000) { ++not_converged; it -= 1000; hiter[i] = it; first_bad = std::min(first_bad, i); }
-      sum_it += it;
-      max_it = std::max(max_it, it);
-      sum_nb += nneigh[i];
-    }
-    stats.not_converged = not_converged;
-    stats.first_not_converged = first_bad < n ? static_cast<std::int64_t>(p.id[first_bad]) : -1;
-    stats.max_iterations = max_it;
-    stats.mean_iterations = n ? sum_it / n : 0.0;
-    stats.mean_neighbours = n ? sum_nb / n : 0.0;
+    record_stats(c, bisections);
     return true;
   }
 

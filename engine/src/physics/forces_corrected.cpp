@@ -18,11 +18,94 @@
 #include "core/stages.h"
 #include "corrected_kernel.h"
 #include "courant.h"
+#include "pair_fields.h"
 #include "pair_terms.h"
 #include "terms/visc_monaghan.h"
+#include "viscous_stress.h"
 
 namespace sph {
 namespace {
+
+/// The pair loop of the stress form: its fields, terms and the work per particle and per pair.
+class StressLoop {
+ public:
+  StressLoop(StageContext& c, int dim, bool stress)
+      : c_(c), f_(c.p), corr_(c.p), viscous_(c.p, dim, c.prm.visc.nu, stress), visc_(c),
+        monaghan_(c.prm.physics.viscosity == ViscType::Monaghan), skip_walls_(!c.walls_in_sums()),
+        alpha_scale_(monaghan_ ? visc_.alpha_scale : 1.0), beta_scale_(monaghan_ ? visc_.beta_scale : 1.0),
+        support_(c.kernel.support()) {}
+
+  /// dv_a/dt and v_sig of particle i, over its neighbours in list order.
+  void particle(std::size_t i) const {
+    Particles& p = c_.p;
+    const Kernel::Scale si = c_.kernel.scale(f_.h[i]);
+    double Ti[9];
+    stress(i, Ti);
+    for (double& t : Ti) t /= f_.rho[i] * f_.rho[i];
+    double acc[3] = {0.0, 0.0, 0.0};
+    double vs = f_.cs[i];
+    for (std::uint32_t j : c_.nl.of(i)) {
+      if (j == i) continue;
+      if (skip_walls_ && p.kind[j]) continue;
+      pair(i, j, si, Ti, acc, vs);
+    }
+    for (int k = 0; k < 3; ++k) p.a[k][i] = acc[k];
+    f_.vsig[i] = vs;
+  }
+
+ private:
+  /// T of particle b (3 x 3, row-major): -P I + 2 mu (D - tr D / 3 I)
+  void stress(std::size_t b, double T[9]) const {
+    for (int k = 0; k < 9; ++k) T[k] = 0.0;
+    for (int k = 0; k < viscous_.d; ++k) T[4 * k] = -f_.P[b];
+    if (viscous_.on()) viscous_.add(b, f_.rho[b], T);
+  }
+
+  /// Pair (i, j)'s term of dv_i/dt into acc and its signal speed into vs, if j is within support
+  /// max(h_i, h_j); Ti = T_i / rho_i^2.
+  void pair(std::size_t i, std::uint32_t j, const Kernel::Scale& si, const double Ti[9], double acc[3],
+            double& vs) const {
+    const Particles& p = c_.p;
+    const double* rho = f_.rho;
+    const double* cs = f_.cs;
+    double r[3], mr[3], dv[3];
+    for (int k = 0; k < 3; ++k) {
+      r[k] = p.x[k][i] - p.x[k][j];
+      mr[k] = -r[k];
+      dv[k] = p.v[k][i] - p.v[k][j];
+    }
+    const double r2 = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
+    const double hi = f_.h[i], hj = f_.h[j];
+    const double R = support_ * std::max(hi, hj);
+    if (r2 >= R * R || r2 == 0.0) return;
+    const double rr = std::sqrt(r2), rinv = 1.0 / rr;
+    double Wi, dWi, Wj, dWj;
+    pair::kernels(c_.kernel, si, hi, hj, rr, Wi, dWi, Wj, dWj);
+    double Gi[3], Gj[3], Tj[9];
+    corr_.gradient(i, r, Wi, dWi * rinv, Gi);
+    corr_.gradient(j, mr, Wj, dWj * rinv, Gj);
+    stress(j, Tj);
+    const double inv_rhoj2 = 1.0 / (rho[j] * rho[j]);
+    const double vdotr = dv[0] * r[0] + dv[1] * r[1] + dv[2] * r[2];
+    vs = std::max(vs, pair::signal_speed(cs[i], cs[j], vdotr * rinv, alpha_scale_, beta_scale_));
+    const double Pi = monaghan_ ? pair::monaghan_pi(vdotr, r2, hi, hj, rho[i], rho[j], cs[i], cs[j], visc_.alpha,
+                                                    visc_.beta, visc_.eps)
+                                : 0.0;
+    for (int k = 0; k < viscous_.d; ++k) {
+      double t = 0.0;
+      for (int l = 0; l < viscous_.d; ++l) t += Ti[3 * k + l] * Gi[l] - Tj[3 * k + l] * inv_rhoj2 * Gj[l];
+      acc[k] += f_.m[j] * (t - Pi * 0.5 * (Gi[k] - Gj[k]));
+    }
+  }
+
+  StageContext& c_;
+  const ForceFields f_;
+  const CorrectionFields corr_;
+  const ViscousStress viscous_;
+  const terms::ViscMonaghan visc_;  // constant alpha: visc.switch is refused with this form (Physics::validate)
+  bool monaghan_, skip_walls_;
+  double alpha_scale_, beta_scale_, support_;
+};
 
 class ForcesCorrected final : public Stage {
  public:
@@ -35,87 +118,10 @@ class ForcesCorrected final : public Stage {
   bool sets_acceleration() const override { return true; }
 
   bool run(StageContext& c) override {
-    const Kernel& K = c.kernel;
-    const Params& prm = c.prm;
-    Particles& p = c.p;
-    const std::size_t n = p.fluid();
-    const auto& m = p[Field::Mass];
-    const auto& rho = p[Field::Density];
-    const auto& h = p[Field::H];
-    const auto& P = p[Field::Pressure];
-    const auto& cs = p[Field::SoundSpeed];
-    auto& vsig = p[Field::SignalSpeed];
-    const CorrectionFields corr(p);
-    const int d = dim_;
-    const std::vector<double>* grad[9] = {};
-    if (stress_)
-      for (int k = 0; k < d; ++k)
-        for (int l = 0; l < d; ++l) grad[3 * k + l] = &p[component(Field::VelGradXX, k, l)];
-    const bool monaghan = prm.physics.viscosity == ViscType::Monaghan;
-    const bool skip_walls = !c.walls_in_sums();
-    const double nu = prm.visc.nu;
-    const terms::ViscMonaghan visc(c);  // constant alpha: visc.switch is refused with this form (Physics::validate)
-    const double alpha_scale = monaghan ? visc.alpha_scale : 1.0;
-    const double beta_scale = monaghan ? visc.beta_scale : 1.0;
-    const double support = K.support();
-    // T of particle b (3 x 3, row-major): -P I + 2 mu (D - tr D / 3 I)
-    auto stress = [&](std::size_t b, double T[9]) {
-      for (int k = 0; k < 9; ++k) T[k] = 0.0;
-      for (int k = 0; k < d; ++k) T[4 * k] = -P[b];
-      if (!stress_) return;
-      const double mu = rho[b] * nu;
-      double tr = 0.0;
-      for (int k = 0; k < d; ++k) tr += (*grad[4 * k])[b];
-      for (int k = 0; k < d; ++k)
-        for (int l = 0; l < d; ++l) {
-          const double D = 0.5 * ((*grad[3 * k + l])[b] + (*grad[3 * l + k])[b]);
-          T[3 * k + l] += 2.0 * mu * (D - (k == l ? tr / 3.0 : 0.0));
-        }
-    };
-#pragma omp parallel for schedule(static) if (p.size() >= kParallelMin)
-    for (std::size_t i = 0; i < n; ++i) {
-      const double hi = h[i];
-      const Kernel::Scale si = K.scale(hi);
-      double Ti[9], Tj[9];
-      stress(i, Ti);
-      for (double& t : Ti) t /= rho[i] * rho[i];
-      double acc[3] = {0.0, 0.0, 0.0};
-      double vs = cs[i];
-      for (std::uint32_t j : c.nl.of(i)) {
-        if (j == i) continue;
-        if (skip_walls && p.kind[j]) continue;
-        double r[3], mr[3], dv[3];
-        for (int k = 0; k < 3; ++k) {
-          r[k] = p.x[k][i] - p.x[k][j];
-          mr[k] = -r[k];
-          dv[k] = p.v[k][i] - p.v[k][j];
-        }
-        const double r2 = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
-        const double hj = h[j];
-        const double R = support * std::max(hi, hj);
-        if (r2 >= R * R || r2 == 0.0) continue;
-        const double rr = std::sqrt(r2), rinv = 1.0 / rr;
-        double Wi, dWi, Wj, dWj;
-        pair::kernels(K, si, hi, hj, rr, Wi, dWi, Wj, dWj);
-        double Gi[3], Gj[3];
-        corr.gradient(i, r, Wi, dWi * rinv, Gi);
-        corr.gradient(j, mr, Wj, dWj * rinv, Gj);
-        stress(j, Tj);
-        const double inv_rhoj2 = 1.0 / (rho[j] * rho[j]);
-        const double vdotr = dv[0] * r[0] + dv[1] * r[1] + dv[2] * r[2];
-        vs = std::max(vs, pair::signal_speed(cs[i], cs[j], vdotr * rinv, alpha_scale, beta_scale));
-        const double Pi = monaghan ? pair::monaghan_pi(vdotr, r2, hi, hj, rho[i], rho[j], cs[i], cs[j], visc.alpha,
-                                                       visc.beta, visc.eps)
-                                   : 0.0;
-        for (int k = 0; k < d; ++k) {
-          double t = 0.0;
-          for (int l = 0; l < d; ++l) t += Ti[3 * k + l] * Gi[l] - Tj[3 * k + l] * inv_rhoj2 * Gj[l];
-          acc[k] += m[j] * (t - Pi * 0.5 * (Gi[k] - Gj[k]));
-        }
-      }
-      for (int k = 0; k < 3; ++k) p.a[k][i] = acc[k];
-      vsig[i] = vs;
-    }
+    const StressLoop loop(c, dim_, stress_);
+    const std::size_t n = c.p.fluid();
+#pragma omp parallel for schedule(static) if (c.p.size() >= kParallelMin)
+    for (std::size_t i = 0; i < n; ++i) loop.particle(i);
     return true;
   }
 

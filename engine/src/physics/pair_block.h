@@ -11,6 +11,7 @@
 #include <span>
 #include <vector>
 
+#include "core/parallel.h"
 #include "sph/particles.h"
 
 namespace sph {
@@ -68,6 +69,17 @@ std::size_t compact_pairs(const Particles& p, std::size_t i, std::span<const std
   }
   b.n = n;
   return n;
+}
+
+/// R2 = (support h)^2 of every particle, ghosts included: the reach gather_pairs tests against.
+inline void support_radii2(const Particles& p, double support, std::vector<double>& R2) {
+  const double* h = p[Field::H].data();
+  R2.resize(p.total());
+#pragma omp parallel for schedule(static) if (p.size() >= kParallelMin)
+  for (std::size_t j = 0; j < R2.size(); ++j) {
+    const double R = support * h[j];
+    R2[j] = R * R;
+  }
 }
 
 /// The j of `nb` with 0 < |r_ij|^2 < max(R2_i, R2_j), R2 = (support h)^2 per particle (ghosts

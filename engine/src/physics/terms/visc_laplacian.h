@@ -6,15 +6,13 @@
 
 #include "core/stage.h"
 #include "physics/pair_terms.h"
+#include "visc_parts.h"
 
 namespace sph::terms {
 
-struct ViscLaplacian {
-  static constexpr bool kPi = false;
-  static constexpr bool kLaplacian = true;
+struct ViscLaplacian : ViscParts<false, true> {
   static constexpr std::string_view kName = "Laplacian viscosity";
   double nu, eps;  ///< visc.nu [length^2/time], visc.eps [dimensionless]
-  double alpha_scale = 1.0, beta_scale = 1.0;
   explicit ViscLaplacian(const StageContext& c) : nu(c.prm.visc.nu), eps(c.prm.visc.eps) {}
   /// k_ab of the pair: rdW = r_ab . grad W [1/length^d], hm = (h_a + h_b)/2.
   double factor(double mj, double rhoi, double rhoj, double rdW, double r2, double hm) const {

@@ -8,20 +8,18 @@
 
 #include "core/stage.h"
 #include "physics/pair_terms.h"
+#include "visc_parts.h"
 
 namespace sph::terms {
 
-struct ViscMonaghan {
-  static constexpr bool kPi = true;
-  static constexpr bool kLaplacian = false;
+struct ViscMonaghan : ViscParts<true, false> {
   static constexpr std::string_view kName = "artificial viscosity Pi";
   double alpha, beta, eps;  ///< visc.alpha, visc.beta, visc.eps [dimensionless]
   /// The viscosity acts as a diffusion of strength ~ alpha c h: beyond alpha = 1, beta = 2 the explicit
   /// limit shrinks in proportion (pair_terms.h signal_speed).
-  double alpha_scale, beta_scale;
   explicit ViscMonaghan(const StageContext& c)
-      : alpha(c.prm.visc.alpha), beta(c.prm.visc.beta), eps(c.prm.visc.eps), alpha_scale(std::max(1.0, alpha)),
-        beta_scale(std::max(1.0, 0.5 * beta)) {}
+      : ViscParts{std::max(1.0, c.prm.visc.alpha), std::max(1.0, 0.5 * c.prm.visc.beta)}, alpha(c.prm.visc.alpha),
+        beta(c.prm.visc.beta), eps(c.prm.visc.eps) {}
   /// Pi_ab of particles i and j [velocity^2/density], without a branch (vectorised loops).
   double pi(std::size_t, std::uint32_t, double vdotr, double r2, double hi, double hj, double rhoi, double rhoj,
             double ci, double cj) const {

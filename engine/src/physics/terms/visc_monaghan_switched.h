@@ -16,20 +16,17 @@
 
 namespace sph::terms {
 
-struct ViscMonaghanSwitched {
-  static constexpr bool kPi = true;
-  static constexpr bool kLaplacian = false;
+struct ViscMonaghanSwitched : ViscParts<true, false> {
   static constexpr std::string_view kName = "artificial viscosity Pi (alpha per particle)";
   double beta_ref, eps;  ///< beta / alpha_ref [dimensionless], visc.eps
   const double* alpha;   ///< alpha of every particle, ghosts included
-  double alpha_scale, beta_scale;
   static double reference(const Params& p) {
     return p.physics.visc_switch == ViscSwitch::CullenDehnen ? p.visc.alpha_max : p.visc.alpha;
   }
   explicit ViscMonaghanSwitched(const StageContext& c)
-      : beta_ref(reference(c.prm) > 0.0 ? c.prm.visc.beta / reference(c.prm) : 0.0), eps(c.prm.visc.eps),
-        alpha(c.p[Field::ViscAlpha].data()), alpha_scale(std::max(1.0, reference(c.prm))),
-        beta_scale(std::max(1.0, 0.5 * c.prm.visc.beta)) {}
+      : ViscParts{std::max(1.0, reference(c.prm)), std::max(1.0, 0.5 * c.prm.visc.beta)},
+        beta_ref(reference(c.prm) > 0.0 ? c.prm.visc.beta / reference(c.prm) : 0.0), eps(c.prm.visc.eps),
+        alpha(c.p[Field::ViscAlpha].data()) {}
   double pi(std::size_t i, std::uint32_t j, double vdotr, double r2, double hi, double hj, double rhoi, double rhoj,
             double ci, double cj) const {
     const double a = 0.5 * (alpha[i] + alpha[j]);

@@ -1,18 +1,15 @@
-// No viscosity: the pair loops add no viscous term (physics.viscosity = none). A viscosity term type
-// tells a pair loop which of its parts it has: kPi (a pair pressure Pi_ab added to the pressure bracket)
-// and kLaplacian (a term k_ab v_ab of its own), and scales the pair signal speed (pair_terms.h).
+// No viscosity: the pair loops add no viscous term (physics.viscosity = none); the parts a viscosity
+// term type has are visc_parts.h's.
 #pragma once
 #include <string_view>
 
 #include "core/stage.h"
+#include "visc_parts.h"
 
 namespace sph::terms {
 
-struct ViscNone {
-  static constexpr bool kPi = false;
-  static constexpr bool kLaplacian = false;
+struct ViscNone : ViscParts<false, false> {
   static constexpr std::string_view kName = "none";
-  double alpha_scale = 1.0, beta_scale = 1.0;  ///< factors of the pair signal speed [dimensionless]
   explicit ViscNone(const StageContext&) {}
 };
 
