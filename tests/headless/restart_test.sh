@@ -93,7 +93,8 @@ signals)
   ;;
 kill)
   # kill -9 at 20 moments drawn from a seeded generator; resume each from its last checkpoint (with the
-  # ParaView, SPLASH and HDF5 files too)
+  # ParaView, SPLASH and HDF5 files too). Odd runs wait for their first checkpoint before the random delay
+  # (halved), so at least 10 kills test a resume however loaded the machine is; even runs may die before it.
   run=(run sod --set scene.n_left=400 --until 0.2 --threads 1 --quiet --checkpoint-every 0.01 --vtu --splash --hdf5)
   start=$(date +%s%N)
   "$sph" "${run[@]}" --out "$work/whole" 2> /dev/null; check "uninterrupted" 0 $?
@@ -105,6 +106,10 @@ kill)
     delay=$(awk -v r=$RANDOM -v w=$wall_ms 'BEGIN { printf "%.3f", r / 32768 * w / 1000 }')
     "$sph" "${run[@]}" --out "$d" 2> /dev/null &
     pid=$!
+    if [ $((i % 2)) -eq 1 ]; then
+      for _ in $(seq 1500); do [ -e "$d/checkpoint.sph" ] && break; sleep 0.02; done
+      delay=$(awk -v d="$delay" 'BEGIN { printf "%.3f", d / 2 }')
+    fi
     sleep "$delay"; kill -9 $pid 2> /dev/null; wait $pid 2> /dev/null
     [ $? -eq 137 ] && killed=$((killed + 1))  # else it had finished before the kill
     if [ -e "$d/checkpoint.sph" ]; then
