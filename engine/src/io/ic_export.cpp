@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <numbers>
 
-#include "core/number_text.h"
+#include "text/number_text.h"
 #include "io/export_box.h"
 #include "sph/kernel.h"
 

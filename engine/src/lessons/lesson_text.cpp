@@ -1,5 +1,5 @@
 // Lessons as text (`sph lesson show`, the GUI's claim line).
-#include "core/number_text.h"
+#include "text/number_text.h"
 #include "lesson_sets_text.h"
 #include "sph/lesson.h"
 
