@@ -1,5 +1,5 @@
-// A slower default play speed for scenes that would reach t_end in under a second of wall time (Sod runs
-// to t = 0.2 in 0.2 s): they are paced to reach it in about 8 s, and the status line says so. The wall
+// A slower default play speed for scenes that would reach t_end in under 4 s of wall time, too fast to
+// watch (Sod runs to t = 0.2 in 0.2 s; about 1-2 s in a sanitizer build): they are paced to reach it in about 8 s, and the status line says so. The wall
 // time is predicted from the engine's measured steps per second and the steps taken so far (first
 // frame with 20 steps or at t_end); a run that reached t_end at full speed, or was past a tenth of it when
 // paced, replays from t = 0 paced.
@@ -14,7 +14,7 @@ class GuiState;
 
 class AutoPace {
  public:
-  static constexpr double kShortRun = 1.0;  ///< [s] wall time to t_end below which a scene is paced
+  static constexpr double kShortRun = 4.0;  ///< [s] wall time to t_end below which a scene is paced
   static constexpr double kPacedRun = 8.0;  ///< [s] wall time to t_end when paced
   static constexpr double kLateFraction = 0.1;  ///< paced past this fraction of t_end: replayed from t = 0
 

@@ -102,7 +102,7 @@ int parse_options(int argc, char** argv, GuiOptions* out) {
       ->check(CLI::Range(1.0, 3.0));
   app.add_flag("--high-contrast", o.high_contrast, "the high-contrast theme");
   std::string pace;
-  app.add_option("--auto-pace", pace, "on: slow a scene that would reach t_end in under 1 s of wall time to about 8 s "
+  app.add_option("--auto-pace", pace, "on: slow a scene that would reach t_end in under 4 s of wall time to about 8 s "
                                       "(default: on unless the run is scripted); off: never")
       ->check(CLI::IsMember({"on", "off"}));
   app.add_option("--scrub-back", o.scrub_back, "test hook: once at t_end, scrub the view back this many stored frames")
