@@ -31,8 +31,7 @@ SceneSpec burgers_base(FpmType type) {
   s.defaults.kernel.type = KernelType::M4;  // only the neighbour lists' reach (2 h) comes from the kernel
   s.defaults.time.integrator = IntegratorType::Euler;
   s.defaults.time.cfl = 1.0;
-  s.defaults.time.t_end = 1.0;
-  s.defaults.time.dt_out = 0.25;
+  set_run_times(s.defaults, 1.0, 0.25);
   s.defaults.fpm.eps = type == FpmType::BurgersViscous ? 0.005 : 0.0;
   s.convergence = {"scene.n", {60, 120, 240, 480, 960, 1920}, 0.8, ""};  // seed 002 Table 1
   s.params = {{"n", 300, 8, 1e6, true, "number of points N", "count"},
@@ -41,7 +40,7 @@ SceneSpec burgers_base(FpmType type) {
               {"x_hi", 2.0, -1e3, 1e3, false, "right end [length]", "length"},
               {"h_dx", 1.5, 1.0, 6.0, false, "MLS smoothing length h in units of dx (seed 002: 1.5)", "dimensionless (multiple of dx)"},
               {"random", 0, 0, 1, true, "1: the seed's random points, 3 per cell (Program 2); 0: equidistant", "dimensionless (0 or 1)"},
-              {"seed", 1, 0, 1e9, true, "random seed of the points", "dimensionless (random seed)"}};
+              seed_param("random seed of the points")};
   s.build = [](const Params& prm, const SceneValues& v) {
     const auto n = static_cast<std::size_t>(v.at("n"));
     const double lo = v.at("x_lo"), hi = v.at("x_hi"), a = v.at("a");

@@ -51,12 +51,11 @@ SPH_SCENE(190, colliding_polytropes_scene) {
               {"b", 0.0, 0.0, 1e3, false, "impact parameter: offset of the centres along y [R] (0: head-on)", "R (star radius)"},
               {"relax", 3.0, 0.0, 100.0, false,
                "relaxation time of the star with a = -v/tau, tau = 0.1 [time] (0: the random placement)", "time"},
-              {"seed", 1, 0, 1e9, true, "random seed of the placement", "dimensionless (random seed)"}};
+              seed_param("random seed of the placement")};
   Params& d = s.defaults;
   d.physics.eos = EosType::IdealGas;
   d.physics.energy = Toggle::On;
-  d.time.t_end = 6.0;
-  d.time.dt_out = 0.1;
+  set_run_times(d, 6.0, 0.1);
   s.energy_bound = 2e-2;  // measured to t = 6: 9.7e-3 (the merger's shocks at the tree's force error)
   s.allow(Slot::Eos, {"ideal_gas"});
   s.build = [](const Params& prm, const SceneValues& v) {

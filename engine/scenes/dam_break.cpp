@@ -40,8 +40,7 @@ SPH_SCENE(90, dam_break_scene) {
   // (front against the nearer data set, T <= 2.5): alpha = 0.1 runs ahead by up to 7.0%, 0.2 by up to
   // 4.3%, 0.3 by up to 3.6%. The experiment's floor is no-slip.
   s.defaults = liquid_defaults(2.0 * s.params[0].value, 0.2);
-  s.defaults.time.t_end = 0.7;  // T = t sqrt(2g/a) = 3.1 for a = 1 m
-  s.defaults.time.dt_out = 0.05;
+  set_run_times(s.defaults, 0.7, 0.05);  // T = t sqrt(2g/a) = 3.1 for a = 1 m
   s.allow(Slot::Walls, {"dummy", "lennard_jones"});
   s.build = [](const Params& prm, const SceneValues& v) {
     const double a = v.at("a"), dx = v.at("dx"), L = 4.0 * a, H = 2.0 * a;
@@ -77,8 +76,7 @@ SPH_SCENE(100, dam_break_slope_scene) {
   s.defaults.physics.force = ForceType::Standard;
   s.defaults.physics.xsph = Toggle::On;
   s.defaults.time.dt = 1.5e-4;                         // seed 001 §7.2: dt = 0.15 ms
-  s.defaults.time.t_end = 5.0;                         // the seed's water is at rest by t = 4.5 s
-  s.defaults.time.dt_out = 0.1;
+  set_run_times(s.defaults, 5.0, 0.1);                 // the seed's water is at rest by t = 4.5 s
   s.allow(Slot::Walls, {"lennard_jones"});
   s.build = [](const Params& prm, const SceneValues& v) {
     const double W = v.at("width"), H = v.at("height"), F = v.at("floor"), dx = v.at("dx");

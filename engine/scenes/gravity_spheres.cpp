@@ -42,9 +42,7 @@ SceneSpec sphere_base(std::string name, std::string description) {
 }
 
 /// The seed of the rejection sampling (sample_sphere), a parameter of every scene here.
-SceneParam seed_param() {
-  return {"seed", 1, 0, 1e9, true, "random seed of the rejection sampling", "dimensionless (random seed)"};
-}
+SceneParam sampling_seed_param() { return seed_param("random seed of the rejection sampling"); }
 
 }  // namespace
 
@@ -53,12 +51,11 @@ SPH_SCENE(150, dust_sphere_scene) {
       "dust_sphere",
       "seed 003 §2.7: a pressureless sphere rho ~ 1/r collapses under its own gravity (N = 4000, eps = 0.1)");
   s.params = {{"n", 4000, 2, 1e7, true, "number of particles", "count"},
-              seed_param()};
+              sampling_seed_param()};
   make_nbody(s, GravityType::Tree, 1.0);
   s.defaults.gravity.eps = 0.1;  // seed 003 Fig. 2.17
   s.defaults.time.cfl = 0.05;    // dt = 0.05 sqrt(eps / |a|): |dE/E| < 1e-4 (0.2: 4e-3)
-  s.defaults.time.t_end = 3.0;
-  s.defaults.time.dt_out = 0.1;
+  set_run_times(s.defaults, 3.0, 0.1);
   s.build = [](const Params& prm, const SceneValues& v) {
     const auto n = static_cast<std::size_t>(v.at("n"));
     std::vector<Body> b;
@@ -76,12 +73,11 @@ SPH_SCENE(160, dust_collision_scene) {
   s.params = {{"n", 1000, 2, 1e7, true, "particles per sphere (seed: 1000)", "count"},
               {"separation", 4.0, 0.0, 1e3, false, "distance between the centres (seed: 10)", "length"},
               {"speed", 0.5, 0.0, 1e3, false, "speed of each sphere towards the other (seed: 0)", "length/time"},
-              seed_param()};
+              sampling_seed_param()};
   make_nbody(s, GravityType::Tree, 1.0);
   s.defaults.gravity.eps = 0.1;
   s.defaults.time.cfl = 0.2;
-  s.defaults.time.t_end = 3.0;
-  s.defaults.time.dt_out = 0.1;
+  set_run_times(s.defaults, 3.0, 0.1);
   s.build = [](const Params& prm, const SceneValues& v) {
     const auto n = static_cast<std::size_t>(v.at("n"));
     const double d = v.at("separation"), u = v.at("speed");
@@ -100,7 +96,7 @@ SPH_SCENE(170, evrard_scene) {
       "seed 003 §3.4.1 (Evrard 1988): a cold gas sphere rho ~ 1/r collapses, bounces and heats (N = 4096)");
   s.params = {{"n", 4096, 8, 1e7, true, "number of particles (seed: 4096)", "count"},
               {"u0", 0.05, 0.0, 10.0, false, "initial specific internal energy [G M / R] (seed: 0.05)", "G M / R"},
-              seed_param()};
+              sampling_seed_param()};
   Params& d = s.defaults;
   d.physics.gravity = GravityType::Tree;
   d.gravity.G = 1.0;
@@ -110,8 +106,7 @@ SPH_SCENE(170, evrard_scene) {
   d.visc.alpha = 1.0;
   d.visc.beta = 2.0;
   d.time.integrator = IntegratorType::Leapfrog;
-  d.time.t_end = 3.0;
-  d.time.dt_out = 0.1;
+  set_run_times(d, 3.0, 0.1);
   s.allow(Slot::Eos, {"ideal_gas"});
   s.allow(Slot::Walls, {"none"});
   s.allow(Slot::Gravity, {"tree", "direct"});

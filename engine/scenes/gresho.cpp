@@ -27,8 +27,7 @@ SPH_SCENE(250, gresho_scene) {
       64);
   s.defaults.kernel.type = KernelType::WendlandC4;
   s.defaults.kernel.eta = 2.0;
-  s.defaults.time.t_end = 1.0;
-  s.defaults.time.dt_out = 0.1;
+  set_run_times(s.defaults, 1.0, 0.1);
   s.build = [dim = s.dim](const Params& prm, const SceneValues& v) {
     const Lattice start = start_positions(dim, {-0.5, -0.5, 0.0}, {0.5, 0.5, 0.0}, v);
     const std::vector<Vec3>& x = start.x;

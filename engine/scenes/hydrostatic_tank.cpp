@@ -19,8 +19,7 @@ SPH_SCENE(110, hydrostatic_tank_scene) {
               {"dx", 0.025, 1e-4, 1.0, false, "particle spacing [m]", "m"}};
   Params& d = s.defaults;
   d = tank_params(1.0, 0.1);
-  d.time.t_end = 1.0;
-  d.time.dt_out = 0.1;
+  set_run_times(d, 1.0, 0.1);
   s.allow(Slot::Walls, {"dummy", "lennard_jones"});
   s.build = [](const Params& prm, const SceneValues& v) {
     const double W = v.at("width"), H = v.at("depth"), dx = v.at("dx");

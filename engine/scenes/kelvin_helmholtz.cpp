@@ -26,8 +26,7 @@ SPH_SCENE(260, kelvin_helmholtz_scene) {
       "[0,1]^2: reference the mode amplitude's fitted growth rate against the linear rate of the smooth "
       "compressible profile; passes if within 20% (rate_err < 0.2)",
       128);
-  s.defaults.time.t_end = 1.5;
-  s.defaults.time.dt_out = 0.05;
+  set_run_times(s.defaults, 1.5, 0.05);
   s.params.insert(s.params.end(), {
               {"ramp", 0.025, 1e-4, 0.1, false, "width L of the density and velocity ramps [length]", "length"},
               {"amplitude", 0.01, 0.0, 0.1, false, "seed v_y = amplitude sin(4 pi x) [length/time]", "length/time"},

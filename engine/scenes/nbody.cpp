@@ -63,8 +63,7 @@ SPH_SCENE(120, two_body_fall_scene) {
               {"m_earth", kEarth, 0.0, 1.0, false, "mass of the falling body [Msun] (seed: 3.00e-6)", "Msun"}};
   s.defaults.time.integrator = IntegratorType::RK4;  // the fall is not an orbit: accuracy, not symplecticity
   s.defaults.time.cfl = 0.01;                        // dt = 0.01 of the pair's dynamical time sqrt(r^3/mu)
-  s.defaults.time.t_end = 0.175;                     // the encounter is at t = 0.1768 yr (r = 0.08 AU at 0.175)
-  s.defaults.time.dt_out = 0.025;
+  set_run_times(s.defaults, 0.175, 0.025);           // the encounter is at t = 0.1768 yr (r = 0.08 AU at 0.175)
   s.build = [](const Params& prm, const SceneValues& v) { return bodies_setup(prm, 2, fall_bodies(v), 1.2 * v.at("r0")); };
   s.reference = [](const Params& prm, const SceneValues& v) { return make_fall_reference(fall_bodies(v), prm.gravity.G); };
   return s;
@@ -79,8 +78,7 @@ SPH_SCENE(130, kepler_scene) {
               {"e", -1.0, -1.0, 0.99, false, "eccentricity of an orbit started at aphelion; < 0: use v0", "dimensionless"},
               {"m_earth", kEarth, 0.0, 1.0, false, "mass of the orbiting body [Msun]", "Msun"}};
   s.defaults.time.dt = 0.002;  // fixed (leapfrog stays symplectic): 485 steps per orbit of the seed's 0.97 yr
-  s.defaults.time.t_end = 10.0;
-  s.defaults.time.dt_out = 0.1;
+  set_run_times(s.defaults, 10.0, 0.1);
   s.build = [](const Params& prm, const SceneValues& v) { return bodies_setup(prm, 2, kepler_bodies(v), 1.3 * v.at("r0")); };
   s.reference = [](const Params& prm, const SceneValues& v) { return make_kepler_reference(kepler_bodies(v), prm.gravity.G); };
   // the energy error of ten years against the timestep (seed 003 eq. 2.24): sph bench kepler
@@ -93,8 +91,7 @@ SPH_SCENE(140, solar_system_scene) {
       "solar_system",
       "seed 003 §2.5.1: the Sun, eight planets and Pluto from the seed's table; energy and angular momentum");
   s.defaults.time.dt = 0.001;  // fixed: 240 steps per orbit of Mercury (0.24 yr)
-  s.defaults.time.t_end = 100.0;
-  s.defaults.time.dt_out = 1.0;
+  set_run_times(s.defaults, 100.0, 1.0);
   s.build = [](const Params& prm, const SceneValues&) { return bodies_setup(prm, 2, solar_bodies(), 42.0); };
   s.reference = [](const Params& prm, const SceneValues&) {
     return make_conservation_reference(solar_bodies(), prm.gravity.G, prm.gravity.eps);

@@ -53,8 +53,7 @@ SPH_SCENE(240, noh_scene) {
       "Noh implosion, 2D: a cold disc (rho = 1, u = 1e-6) converging at speed 1, gamma 5/3, hexagonal lattice 200 "
       "across r < 1, t = 0.6; exact: rho = 16 behind the shock at t/3; pass: post-shock rho within 10% of 16",
       2);
-  s.defaults.time.t_end = 0.6;
-  s.defaults.time.dt_out = 0.1;
+  set_run_times(s.defaults, 0.6, 0.1);
   s.params = {{"n_side", 200, 4, 20000, true, "lattice spacings across the disc's diameter (spacing 2 radius / n_side)", "count"},
               {"radius", 1.0, 0.01, 1e3, false, "initial radius of the gas disc [length]", "length"},
               {"rho0", 1.0, 1e-9, 1e9, false, "initial density", "mass/volume"},

@@ -19,8 +19,7 @@ SceneSpec box_base() {
   s.category = "gas dynamics / periodic box (seed 000 §4.1)";
   s.dim = 2;
   s.defaults.physics.viscosity = ViscType::None;
-  s.defaults.time.t_end = 30.0;
-  s.defaults.time.dt_out = 1.0;
+  set_run_times(s.defaults, 30.0, 1.0);
   s.allow(Slot::Eos, {"ideal_gas", "isothermal"});
   s.allow(Slot::Walls, {"none"});
   s.energy_bound = 5e-3;  // measured to t = 30: box_random 2.0e-3, box_perturbed 2.3e-4 (leapfrog)

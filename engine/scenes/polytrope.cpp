@@ -21,14 +21,13 @@ SPH_SCENE(180, polytrope_scene) {
   SceneSpec s = polytrope_base("polytrope",
                                "seed 003 §3.4.3: a polytropic star (n = 1) from the Lane-Emden solution, relaxed by damping");
   s.params = {{"n", 4000, 8, 1e7, true, "number of particles", "count"},
-              {"seed", 1, 0, 1e9, true, "random seed of the placement", "dimensionless (random seed)"}};
+              seed_param("random seed of the placement")};
   Params& d = s.defaults;
   d.physics.eos = EosType::Polytropic;
   d.physics.energy = Toggle::Off;
   d.physics.body_force = BodyForce::Damping;
   d.body.tau = 0.1;
-  d.time.t_end = 4.0;
-  d.time.dt_out = 0.2;
+  set_run_times(d, 4.0, 0.2);
   s.allow(Slot::Eos, {"polytropic"});
   s.build = [](const Params& prm, const SceneValues& v) {
     const LaneEmden le = star_profile(prm);

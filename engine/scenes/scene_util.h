@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <utility>
 
 #include "sph/scene.h"
 
@@ -45,6 +46,17 @@ SceneSpec scene_head(std::string name, std::string category, std::string descrip
 /// Monaghan viscosity (alpha, beta); the caller adds the rest.
 SceneSpec gas_test_scene(std::string name, std::string category, std::string description, int dim, KernelType kernel,
                          double gamma, double alpha, double beta);
+
+/// A scene's default run: to t_end, with an output every dt_out (both in the scene's time unit).
+inline void set_run_times(Params& d, double t_end, double dt_out) {
+  d.time.t_end = t_end;
+  d.time.dt_out = dt_out;
+}
+
+/// The scene parameter "seed" (default 1) of a random placement; `description` says what it seeds.
+inline SceneParam seed_param(std::string description) {
+  return {"seed", 1, 0, 1e9, true, std::move(description), "dimensionless (random seed)"};
+}
 
 /// Sets u from pressure for an ideal gas: u = P / ((gamma - 1) rho).
 inline double energy_from_pressure(double P, double rho, double gamma) { return P / ((gamma - 1.0) * rho); }

@@ -50,8 +50,7 @@ SceneSetup build_blast(int dim, const Params& prm, const SceneValues& v) {
 
 SceneSpec blast_scene(int dim, const char* name, const char* description, double half, double n_side) {
   SceneSpec s = strong_shock_scene(name, "gas dynamics / blast waves", description, dim);
-  s.defaults.time.t_end = 0.1;
-  s.defaults.time.dt_out = 0.025;
+  set_run_times(s.defaults, 0.1, 0.025);
   s.params = {{"n_side", n_side, 4, 4000, true, "lattice spacings across the box side (the spacing is 2 half / n_side)", "count"},
               {"half", half, 0.05, 1e3, false, "half-width of the periodic box [length]", "length"},
               {"E", 1.0, 1e-9, 1e9, false, "blast energy (2D: per unit length)", "energy"},

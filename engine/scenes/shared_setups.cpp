@@ -64,8 +64,7 @@ SceneSpec tube_scene(std::string name, std::string description, int dim, KernelT
                      double dt_out, std::vector<std::string> eos) {
   SceneSpec s = scene_head(std::move(name), "gas dynamics / shock tubes", std::move(description), dim);
   s.defaults.kernel.type = kernel;
-  s.defaults.time.t_end = t_end;
-  s.defaults.time.dt_out = dt_out;
+  set_run_times(s.defaults, t_end, dt_out);
   s.allow(Slot::Eos, std::move(eos));
   s.allow(Slot::Walls, {"none"});
   return s;

@@ -151,8 +151,7 @@ SceneSpec riemann_variant(const char* name, const char* description, double x_lo
   s.name = name;
   s.description = description;
   s.params = tube_params(x_lo, x_hi, x0, l, r, n_left);
-  s.defaults.time.t_end = t_end;
-  s.defaults.time.dt_out = t_end / 4.0;
+  set_run_times(s.defaults, t_end, t_end / 4.0);
   s.convergence.values = {100, 200, 400, 800};  // the strong waves cost many steps: 1600 takes 100 s with RK4
   s.build = [s](const Params& p, const SceneValues& v) { return build_tube(s, p, v); };
   return s;
