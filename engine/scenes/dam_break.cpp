@@ -17,8 +17,6 @@
 namespace sph::scenes {
 namespace {
 
-constexpr double kG = 9.81;
-
 /// The dam breaks' physics: tank_params with seed 001 §7.2's Lennard-Jones exponents (when chosen).
 Params liquid_defaults(double H, double alpha = 0.1) {
   Params d = tank_params(H, alpha);
@@ -32,22 +30,19 @@ Params liquid_defaults(double H, double alpha = 0.1) {
 SPH_SCENE(90, dam_break_scene) {
   SceneSpec s = liquid_scene(
       "dam_break",
-      "water column a x 2a collapses in a 4a tank; surge front vs Martin & Moyce 1952, Koshizuka & Oka 1996");
+      "water column a x 2a collapses in a 4a tank; surge front vs Martin & Moyce 1952, Koshizuka & Oka 1996",
+      {"dummy", "lennard_jones"});
   s.params = {{"a", 1.0, 0.01, 100.0, false, "column width a [m] (height 2a, tank length 4a)", "m"},
-              {"dx", 0.025, 1e-4, 1.0, false, "particle spacing [m]", "m"}};
+              spacing_param(0.025)};
   // alpha = 0.2: the artificial viscosity between the fluid and the wall particles is the only wall
   // friction the scheme has, and the leading edge is a layer a few particles thick. Measured at dx = a/40
   // (front against the nearer data set, T <= 2.5): alpha = 0.1 runs ahead by up to 7.0%, 0.2 by up to
   // 4.3%, 0.3 by up to 3.6%. The experiment's floor is no-slip.
   s.defaults = liquid_defaults(2.0 * s.params[0].value, 0.2);
   set_run_times(s.defaults, 0.7, 0.05);  // T = t sqrt(2g/a) = 3.1 for a = 1 m
-  s.allow(Slot::Walls, {"dummy", "lennard_jones"});
   s.build = [](const Params& prm, const SceneValues& v) {
     const double a = v.at("a"), dx = v.at("dx"), L = 4.0 * a, H = 2.0 * a;
-    LiquidLayout lay;
-    add_fluid_block(lay, 0.0, a, 0.0, H, dx);
-    add_tank_walls(lay, L, 1.25 * H, dx, prm.physics.walls, dummy_layers(prm, 2));
-    SceneSetup out{make_liquid(prm, lay, dx, H, -prm.body.gy), {}, dx, lj_strength(kG, H)};
+    SceneSetup out = tank_setup(prm, a, H, L, 1.25 * H, dx);
     out.domain.lo = {-0.1 * a, -0.1 * a, 0.0};
     out.domain.hi = {L + 0.1 * a, 1.25 * H, 1.0};
     return out;
@@ -61,12 +56,13 @@ SPH_SCENE(90, dam_break_scene) {
 SPH_SCENE(100, dam_break_slope_scene) {
   SceneSpec s = liquid_scene(
       "dam_break_slope",
-      "seed 001 §7.2: a column released towards a 30 degree slope, Lennard-Jones walls, dt = 0.15 ms; comes to rest");
+      "seed 001 §7.2: a column released towards a 30 degree slope, Lennard-Jones walls, dt = 0.15 ms; comes to rest",
+      {"lennard_jones"});
   s.params = {{"width", 0.3, 0.01, 10.0, false, "column width [m]", "m"},
               {"height", 0.6, 0.01, 10.0, false, "column height H [m]", "m"},
               {"floor", 0.6, 0.0, 100.0, false, "length of the flat floor before the slope [m]", "m"},
               {"angle", 30.0, 5.0, 80.0, false, "slope angle [degrees]", "degrees"},
-              {"dx", 0.02, 1e-4, 1.0, false, "particle spacing [m]", "m"}};
+              spacing_param(0.02)};
   s.defaults = liquid_defaults(0.6);
   s.defaults.physics.walls = WallType::LennardJones;  // seed 001 eq. 60
   // The standard formulation with XSPH (seed 001 eqs. 44-47). With the corrected gradients and these
@@ -77,7 +73,6 @@ SPH_SCENE(100, dam_break_slope_scene) {
   s.defaults.physics.xsph = Toggle::On;
   s.defaults.time.dt = 1.5e-4;                         // seed 001 §7.2: dt = 0.15 ms
   set_run_times(s.defaults, 5.0, 0.1);                 // the seed's water is at rest by t = 4.5 s
-  s.allow(Slot::Walls, {"lennard_jones"});
   s.build = [](const Params& prm, const SceneValues& v) {
     const double W = v.at("width"), H = v.at("height"), F = v.at("floor"), dx = v.at("dx");
     const double th = v.at("angle") * std::numbers::pi / 180.0;
@@ -90,7 +85,7 @@ SPH_SCENE(100, dam_break_slope_scene) {
     add_wall_line(lay, {-o, top, 0}, {-o, -o, 0}, ds);          // left wall
     add_wall_line(lay, {-o + ds, -o, 0}, corner, ds);            // floor
     add_wall_line(lay, corner, corner + Vec3{std::cos(th), std::sin(th), 0} * slope_len, ds);  // slope
-    SceneSetup out{make_liquid(prm, lay, dx, H, -prm.body.gy), {}, dx, lj_strength(kG, H)};
+    SceneSetup out = liquid_setup(prm, lay, dx, H);
     out.domain.lo = {-0.1 * H, -0.1 * H, 0.0};
     out.domain.hi = {F + top / std::tan(th) + 0.1 * H, top, 1.0};
     return out;

@@ -63,11 +63,10 @@ std::vector<Vec3> random_disc(std::size_t count, std::uint64_t seed) {
 SPH_SCENE(80, elliptical_drop_scene) {
   SceneSpec s = liquid_scene(
       "elliptical_drop",
-      "seed 001 §7.1: water circle with v = (-100x, 100y) becomes an ellipse; ODE semi-axes as reference");
+      "seed 001 §7.1: water circle with v = (-100x, 100y) becomes an ellipse; ODE semi-axes as reference", {"none"});
   Params& d = s.defaults;
   d = liquid_params(std::sqrt(7.0 * 285.714e6 / 1000.0), 0.03);  // seed 001: k = 285.714 MN/m^2 is B
   set_run_times(d, 0.0076, 0.0004);
-  s.allow(Slot::Walls, {"none"});
   s.params = {{"dx", 0.025, 0.002, 0.2, false, "lattice spacing [m] (with random = 0)", "m"},
               {"random", 0, 0, 1, true, "1: random points as in the seed (count of them), 0: square lattice", "dimensionless (0 or 1)"},
               {"count", 1308, 50, 1e6, true, "number of random points (seed 001: 1308)", "count"},

@@ -13,20 +13,16 @@ namespace sph::scenes {
 SPH_SCENE(110, hydrostatic_tank_scene) {
   SceneSpec s = liquid_scene(
       "hydrostatic_tank",
-      "water at rest in a 1 m tank under gravity; pressure against rho0 g (H - y)");
+      "water at rest in a 1 m tank under gravity; pressure against rho0 g (H - y)", {"dummy", "lennard_jones"});
   s.params = {{"width", 1.0, 0.01, 100.0, false, "tank width [m]", "m"},
               {"depth", 1.0, 0.01, 100.0, false, "water depth H [m]", "m"},
-              {"dx", 0.025, 1e-4, 1.0, false, "particle spacing [m]", "m"}};
+              spacing_param(0.025)};
   Params& d = s.defaults;
   d = tank_params(1.0, 0.1);
   set_run_times(d, 1.0, 0.1);
-  s.allow(Slot::Walls, {"dummy", "lennard_jones"});
   s.build = [](const Params& prm, const SceneValues& v) {
     const double W = v.at("width"), H = v.at("depth"), dx = v.at("dx");
-    LiquidLayout lay;
-    add_fluid_block(lay, 0.0, W, 0.0, H, dx);
-    add_tank_walls(lay, W, 1.2 * H, dx, prm.physics.walls, dummy_layers(prm, 2));
-    SceneSetup out{make_liquid(prm, lay, dx, H, -prm.body.gy), {}, dx, 5.0 * 9.81 * H};
+    SceneSetup out = tank_setup(prm, W, H, W, 1.2 * H, dx);
     out.domain.lo = {-0.1 * W, -0.1 * H, 0.0};
     out.domain.hi = {1.1 * W, 1.2 * H, 1.0};
     return out;

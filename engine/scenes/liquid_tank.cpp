@@ -73,7 +73,7 @@ Params liquid_params(double c0, double alpha) {
 }
 
 Params tank_params(double H, double alpha) {
-  constexpr double g = 9.81;
+  constexpr double g = kTankGravity;
   Params d = liquid_params(10.0 * std::sqrt(2.0 * g * H), alpha);
   d.physics.body_force = BodyForce::Uniform;
   d.physics.walls = WallType::Dummy;
@@ -108,9 +108,21 @@ Particles make_liquid(const Params& prm, const LiquidLayout& layout, double dx, 
   return p;
 }
 
-SceneSpec liquid_scene(std::string name, std::string description) {
+SceneSetup liquid_setup(const Params& prm, const LiquidLayout& layout, double dx, double surface) {
+  return {make_liquid(prm, layout, dx, surface, -prm.body.gy), {}, dx, lj_strength(kTankGravity, surface)};
+}
+
+SceneSetup tank_setup(const Params& prm, double W, double H, double L, double top, double dx) {
+  LiquidLayout lay;
+  add_fluid_block(lay, 0.0, W, 0.0, H, dx);
+  add_tank_walls(lay, L, top, dx, prm.physics.walls, dummy_layers(prm, 2));
+  return liquid_setup(prm, lay, dx, H);
+}
+
+SceneSpec liquid_scene(std::string name, std::string description, std::vector<std::string> walls) {
   SceneSpec s = scene_head(std::move(name), "free-surface liquids (seed 001)", std::move(description), 2, UnitSystem::si());
   s.allow(Slot::Eos, {"tait"});
+  s.allow(Slot::Walls, std::move(walls));
   return s;
 }
 

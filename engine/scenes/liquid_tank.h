@@ -47,10 +47,25 @@ Params liquid_params(double c0, double alpha);
 Params tank_params(double H, double alpha);
 
 /// The liquid scenes' common head: 2D, SI units, category "free-surface liquids (seed 001)", Tait EOS
-/// only (the caller sets the physics, liquid_params or tank_params, and the walls it accepts).
-SceneSpec liquid_scene(std::string name, std::string description);
+/// only, the wall options `walls` (none for a free drop). The caller sets the physics (liquid_params or
+/// tank_params).
+SceneSpec liquid_scene(std::string name, std::string description, std::vector<std::string> walls);
 
 /// Lennard-Jones strength of seed 001 §7.2: D = 5 g H.
 inline double lj_strength(double g, double H) { return 5.0 * g * H; }
+
+/// g [m/s^2] of the tank scenes (tank_params' body force, the wall strength).
+inline constexpr double kTankGravity = 9.81;
+
+/// The scene parameter "dx", the lattice spacing of fluid and walls [m] (default dx).
+inline SceneParam spacing_param(double dx) { return {"dx", dx, 1e-4, 1.0, false, "particle spacing [m]", "m"}; }
+
+/// A liquid scene's set-up from its layout: make_liquid with the hydrostatic column below `surface` under
+/// prm's gravity, spacing dx and the Lennard-Jones strength for water that deep (the domain left default).
+SceneSetup liquid_setup(const Params& prm, const LiquidLayout& layout, double dx, double surface);
+
+/// Water of depth H filling [0, W] of an open tank of length L whose walls rise to height `top`
+/// (add_fluid_block, add_tank_walls with prm's wall type), as liquid_setup returns it.
+SceneSetup tank_setup(const Params& prm, double W, double H, double L, double top, double dx);
 
 }  // namespace sph::scenes
