@@ -37,8 +37,21 @@ std::vector<Vec3> sample_sphere(std::size_t n, double R, std::uint64_t seed) {
   return pts;
 }
 
-SceneSpec sphere_base(std::string name, std::string description) {
-  return scene_head(std::move(name), "gravity / self-gravitating spheres (seed 003)", std::move(description), 3);
+/// The dust scenes' start (§2.7, §3.4.2): pure N-body with tree gravity, Plummer softening eps = 0.1
+/// (Fig. 2.17) and the time-step factor cfl, to t = 3 with an output every 0.1.
+SceneSpec dust_base(std::string name, std::string description, double cfl) {
+  SceneSpec s = sphere_head(std::move(name), std::move(description));
+  set_run_times(s.defaults, 3.0, 0.1);
+  make_nbody(s, GravityType::Tree, 1.0);
+  s.defaults.gravity.eps = 0.1;
+  s.defaults.time.cfl = cfl;
+  return s;
+}
+
+/// Appends n dust particles of total mass M: a sample_sphere of radius 1 (its `seed`) moved to `centre`,
+/// every particle at velocity v.
+void add_dust_sphere(std::vector<Body>& b, std::size_t n, std::uint64_t seed, double M, Vec3 centre, Vec3 v) {
+  for (const Vec3& x : sample_sphere(n, 1.0, seed)) b.push_back({M / static_cast<double>(n), x + centre, v});
 }
 
 /// The seed of the rejection sampling (sample_sphere), a parameter of every scene here.
@@ -47,69 +60,53 @@ SceneParam sampling_seed_param() { return seed_param("random seed of the rejecti
 }  // namespace
 
 SPH_SCENE(150, dust_sphere_scene) {
-  SceneSpec s = sphere_base(
+  // cfl: dt = 0.05 sqrt(eps / |a|) keeps |dE/E| < 1e-4 (0.2: 4e-3)
+  SceneSpec s = dust_base(
       "dust_sphere",
-      "seed 003 §2.7: a pressureless sphere rho ~ 1/r collapses under its own gravity (N = 4000, eps = 0.1)");
+      "seed 003 §2.7: a pressureless sphere rho ~ 1/r collapses under its own gravity (N = 4000, eps = 0.1)", 0.05);
   s.params = {{"n", 4000, 2, 1e7, true, "number of particles", "count"},
               sampling_seed_param()};
-  make_nbody(s, GravityType::Tree, 1.0);
-  s.defaults.gravity.eps = 0.1;  // seed 003 Fig. 2.17
-  s.defaults.time.cfl = 0.05;    // dt = 0.05 sqrt(eps / |a|): |dE/E| < 1e-4 (0.2: 4e-3)
-  set_run_times(s.defaults, 3.0, 0.1);
   s.build = [](const Params& prm, const SceneValues& v) {
-    const auto n = static_cast<std::size_t>(v.at("n"));
     std::vector<Body> b;
-    for (const Vec3& x : sample_sphere(n, 1.0, static_cast<std::uint64_t>(v.at("seed"))))
-      b.push_back({1.0 / static_cast<double>(n), x, {0, 0, 0}});
+    add_dust_sphere(b, static_cast<std::size_t>(v.at("n")), static_cast<std::uint64_t>(v.at("seed")), 1.0, {}, {});
     return bodies_setup(prm, 3, b, 1.2);
   };
   return s;
 }
 
 SPH_SCENE(160, dust_collision_scene) {
-  SceneSpec s = sphere_base(
+  SceneSpec s = dust_base(
       "dust_collision",
-      "seed 003 §3.4.2: two rho ~ 1/r dust spheres meet head-on (4 apart, approaching at 0.5 each)");
+      "seed 003 §3.4.2: two rho ~ 1/r dust spheres meet head-on (4 apart, approaching at 0.5 each)", 0.2);
   s.params = {{"n", 1000, 2, 1e7, true, "particles per sphere (seed: 1000)", "count"},
               {"separation", 4.0, 0.0, 1e3, false, "distance between the centres (seed: 10)", "length"},
               {"speed", 0.5, 0.0, 1e3, false, "speed of each sphere towards the other (seed: 0)", "length/time"},
               sampling_seed_param()};
-  make_nbody(s, GravityType::Tree, 1.0);
-  s.defaults.gravity.eps = 0.1;
-  s.defaults.time.cfl = 0.2;
-  set_run_times(s.defaults, 3.0, 0.1);
   s.build = [](const Params& prm, const SceneValues& v) {
     const auto n = static_cast<std::size_t>(v.at("n"));
     const double d = v.at("separation"), u = v.at("speed");
-    std::vector<Body> b;
     const auto seed = static_cast<std::uint64_t>(v.at("seed"));
-    for (const Vec3& x : sample_sphere(n, 1.0, seed)) b.push_back({0.5 / n, x + Vec3{-0.5 * d, 0, 0}, {u, 0, 0}});
-    for (const Vec3& x : sample_sphere(n, 1.0, seed + 1)) b.push_back({0.5 / n, x + Vec3{0.5 * d, 0, 0}, {-u, 0, 0}});
+    std::vector<Body> b;
+    add_dust_sphere(b, n, seed, 0.5, {-0.5 * d, 0, 0}, {u, 0, 0});
+    add_dust_sphere(b, n, seed + 1, 0.5, {0.5 * d, 0, 0}, {-u, 0, 0});
     return bodies_setup(prm, 3, b, 0.5 * d + 1.5);
   };
   return s;
 }
 
 SPH_SCENE(170, evrard_scene) {
-  SceneSpec s = sphere_base(
+  SceneSpec s = gas_sphere_base(
       "evrard",
       "seed 003 §3.4.1 (Evrard 1988): a cold gas sphere rho ~ 1/r collapses, bounces and heats (N = 4096)");
   s.params = {{"n", 4096, 8, 1e7, true, "number of particles (seed: 4096)", "count"},
               {"u0", 0.05, 0.0, 10.0, false, "initial specific internal energy [G M / R] (seed: 0.05)", "G M / R"},
               sampling_seed_param()};
   Params& d = s.defaults;
-  d.physics.gravity = GravityType::Tree;
-  d.gravity.G = 1.0;
   d.gravity.eps = 0.05;  // seed 003 §3.4.1
   s.energy_bound = 2e-3;  // measured to t = 3: 4.3e-4 (the tree's force error dominates)
   d.gas.gamma = 5.0 / 3.0;
-  d.visc.alpha = 1.0;
-  d.visc.beta = 2.0;
-  d.time.integrator = IntegratorType::Leapfrog;
   set_run_times(d, 3.0, 0.1);
   s.allow(Slot::Eos, {"ideal_gas"});
-  s.allow(Slot::Walls, {"none"});
-  s.allow(Slot::Gravity, {"tree", "direct"});
   s.build = [](const Params& prm, const SceneValues& v) {
     const auto n = static_cast<std::size_t>(v.at("n"));
     const std::vector<Vec3> pts = sample_sphere(n, 1.0, static_cast<std::uint64_t>(v.at("seed")));

@@ -35,18 +35,27 @@ double sphere_spacing(std::size_t n, double R) {
   return std::cbrt(4.0 * std::numbers::pi / 3.0 / static_cast<double>(n)) * R;
 }
 
-SceneSpec polytrope_base(std::string name, std::string description) {
-  SceneSpec s = scene_head(std::move(name), "gravity / self-gravitating spheres (seed 003)", std::move(description), 3);
+SceneSpec sphere_head(std::string name, std::string description) {
+  return scene_head(std::move(name), "gravity / self-gravitating spheres (seed 003)", std::move(description), 3);
+}
+
+SceneSpec gas_sphere_base(std::string name, std::string description) {
+  SceneSpec s = sphere_head(std::move(name), std::move(description));
   Params& d = s.defaults;
   d.physics.gravity = GravityType::Tree;
-  d.gravity.softening = Softening::Kernel;
-  d.gas.gamma = 2.0;  // n = 1
-  d.gas.K = 2.0 / std::numbers::pi;
   d.visc.alpha = 1.0;
   d.visc.beta = 2.0;
   d.time.integrator = IntegratorType::Leapfrog;
   s.allow(Slot::Walls, {"none"});
   s.allow(Slot::Gravity, {"tree", "direct"});
+  return s;
+}
+
+SceneSpec polytrope_base(std::string name, std::string description) {
+  SceneSpec s = gas_sphere_base(std::move(name), std::move(description));
+  s.defaults.gravity.softening = Softening::Kernel;
+  s.defaults.gas.gamma = 2.0;  // n = 1
+  s.defaults.gas.K = 2.0 / std::numbers::pi;
   return s;
 }
 

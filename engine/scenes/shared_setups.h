@@ -24,9 +24,16 @@ Domain periodic_box(int dim, const Vec3& lo, const Vec3& hi);
 /// Mean spacing [length] of n particles filling a sphere of radius R [length]: (4 pi / 3 n)^(1/3) R.
 double sphere_spacing(std::size_t n, double R);
 
-/// The polytropic star scenes' common start (seed 003 §3.4.3; G = M = 1): dimension 3, gamma = 2
-/// (n = 1) and K = 2/pi (R = 1), Barnes-Hut gravity with kernel softening (tree or direct accepted),
-/// Monaghan viscosity alpha = 1, beta = 2, leapfrog, no walls. The caller adds the EOS and the rest.
+/// The self-gravitating spheres' head (seed 003): category "gravity / self-gravitating spheres (seed 003)",
+/// dimension 3, code units (G = M = R = 1).
+SceneSpec sphere_head(std::string name, std::string description);
+
+/// A self-gravitating gas sphere's common start: sphere_head with Barnes-Hut gravity (tree or direct
+/// accepted), Monaghan viscosity alpha = 1, beta = 2, leapfrog, no walls. The caller adds the EOS.
+SceneSpec gas_sphere_base(std::string name, std::string description);
+
+/// The polytropic star scenes' common start (seed 003 §3.4.3; G = M = 1): gas_sphere_base with kernel
+/// softening, gamma = 2 (n = 1) and K = 2/pi (R = 1). The caller adds the EOS and the rest.
 SceneSpec polytrope_base(std::string name, std::string description);
 
 /// The Lane-Emden solution of the star of prm.gas.gamma (index n = 1/(gamma - 1)); throws
