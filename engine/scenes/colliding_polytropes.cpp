@@ -59,7 +59,7 @@ SPH_SCENE(190, colliding_polytropes_scene) {
   s.energy_bound = 2e-2;  // measured to t = 6: 9.7e-3 (the merger's shocks at the tree's force error)
   s.allow(Slot::Eos, {"ideal_gas"});
   s.build = [](const Params& prm, const SceneValues& v) {
-    const LaneEmden le = star_profile(prm);  // checks gamma before the relaxation
+    const double R = star_of(prm).scales.R;  // checks gamma before the relaxation
     const auto n = static_cast<std::size_t>(v.at("n"));
     const auto star = relaxed_polytrope(prm, n, static_cast<std::uint64_t>(v.at("seed")), v.at("relax"));
     const double sep = v.at("d"), b = v.at("b"), speed = v.at("v"), g = prm.gas.gamma;
@@ -75,7 +75,6 @@ SPH_SCENE(190, colliding_polytropes_scene) {
       p[Field::H][i] = star->h[k];
       if (p.has(Field::Energy)) p[Field::Energy][i] = prm.gas.K * std::pow(star->rho[k], g - 1.0) / (g - 1.0);
     }
-    const double R = star_scales(le, prm).R;
     SceneSetup out{std::move(p), {}, sphere_spacing(n, R), 0.0};
     const double half[3] = {0.5 * sep + 1.5 * R, 0.5 * b + 1.5 * R, 1.5 * R};
     for (int k = 0; k < 3; ++k) { out.domain.lo[k] = -half[k]; out.domain.hi[k] = half[k]; }

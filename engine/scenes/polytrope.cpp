@@ -30,8 +30,9 @@ SPH_SCENE(180, polytrope_scene) {
   set_run_times(d, 4.0, 0.2);
   s.allow(Slot::Eos, {"polytropic"});
   s.build = [](const Params& prm, const SceneValues& v) {
-    const LaneEmden le = star_profile(prm);
-    const PolytropeScales sc = star_scales(le, prm);
+    const Polytrope star = star_of(prm);
+    const LaneEmden& le = star.le;
+    const PolytropeScales& sc = star.scales;
     const auto n = static_cast<std::size_t>(v.at("n"));
     Particles p = make_particles(prm, 3, n);
     Random rng(static_cast<std::uint64_t>(v.at("seed")));
@@ -47,7 +48,7 @@ SPH_SCENE(180, polytrope_scene) {
       p.x[1][i] = r * st * std::sin(ph);
       p.x[2][i] = r * mu;
       p[Field::Mass][i] = m;
-      const double rho = std::max(sc.rho_c * std::pow(le.theta(r / sc.alpha), le.n()), 0.05 * sc.rho_c);
+      const double rho = std::max(star.density(r), 0.05 * sc.rho_c);
       p[Field::H][i] = eta * std::cbrt(m / rho);
     }
     SceneSetup out{std::move(p), {}, sphere_spacing(n, sc.R), 0.0};

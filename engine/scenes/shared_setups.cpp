@@ -59,14 +59,10 @@ SceneSpec polytrope_base(std::string name, std::string description) {
   return s;
 }
 
-LaneEmden star_profile(const Params& prm) {
+Polytrope star_of(const Params& prm) {
   if (!(prm.gas.gamma > 4.0 / 3.0))
     throw ConfigError("gas.gamma = " + std::to_string(prm.gas.gamma) + ": a polytrope needs gamma > 4/3 (n < 3)");
-  return LaneEmden(1.0 / (prm.gas.gamma - 1.0));
-}
-
-PolytropeScales star_scales(const LaneEmden& le, const Params& prm) {
-  return polytrope_scales(le, 1.0, prm.gas.K, prm.gravity.G);
+  return Polytrope(1.0 / (prm.gas.gamma - 1.0), 1.0, prm.gas.K, prm.gravity.G);
 }
 
 SceneSpec tube_scene(std::string name, std::string description, int dim, KernelType kernel, double t_end,

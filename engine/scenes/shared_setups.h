@@ -36,12 +36,10 @@ SceneSpec gas_sphere_base(std::string name, std::string description);
 /// softening, gamma = 2 (n = 1) and K = 2/pi (R = 1). The caller adds the EOS and the rest.
 SceneSpec polytrope_base(std::string name, std::string description);
 
-/// The Lane-Emden solution of the star of prm.gas.gamma (index n = 1/(gamma - 1)); throws
-/// ConfigError unless gamma > 4/3 (n < 3: a star of finite radius that gravity can hold).
-LaneEmden star_profile(const Params& prm);
-
-/// alpha, rho_c and R of the star of mass 1 with prm's gas.K and gravity.G.
-PolytropeScales star_scales(const LaneEmden& le, const Params& prm);
+/// The star of mass 1 with prm's gas.gamma (index n = 1/(gamma - 1)), gas.K and gravity.G: its Lane-Emden
+/// solution and scales; throws ConfigError unless gamma > 4/3 (n < 3: a star of finite radius that
+/// gravity can hold).
+Polytrope star_of(const Params& prm);
 
 /// A shock tube's common head: category "gas dynamics / shock tubes", the kernel, t_end with an output
 /// every dt_out, the EOS options `eos`, no wall particles (the tube's walls are its domain's).

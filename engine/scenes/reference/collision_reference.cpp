@@ -13,7 +13,7 @@ namespace {
 class CollisionReference final : public Reference {
  public:
   CollisionReference(const Params& prm, std::size_t n, double M, Vec3 r0, Vec3 v0)
-      : n_(n), sc_(polytrope_scales(LaneEmden(1.0 / (prm.gas.gamma - 1.0)), M, prm.gas.K, prm.gravity.G)),
+      : n_(n), sc_(Polytrope(1.0 / (prm.gas.gamma - 1.0), M, prm.gas.K, prm.gravity.G).scales),
         // the point masses are followed down to R/10 (a head-on fall reaches r = 0 in finite time)
         orbit_(r0, v0, prm.gravity.G * 2.0 * M, std::max(2.0 * prm.time.t_end, 20.0), 0.1 * sc_.R),
         t_contact_(orbit_.time_to(2.0 * sc_.R)) {}

@@ -87,4 +87,6 @@ PolytropeScales polytrope_scales(const LaneEmden& le, double M, double K, double
   return {alpha, rho_c, alpha * le.xi1()};
 }
 
+double Polytrope::density(double r) const { return scales.rho_c * std::pow(le.theta(r / scales.alpha), le.n()); }
+
 }  // namespace sph::scenes

@@ -30,4 +30,12 @@ struct PolytropeScales {
 };
 PolytropeScales polytrope_scales(const LaneEmden& le, double M, double K, double G);
 
+/// The polytrope of index n, mass M and constant K under gravity G: its Lane-Emden solution and scales.
+struct Polytrope {
+  Polytrope(double n, double M, double K, double G) : le(n), scales(polytrope_scales(le, M, K, G)) {}
+  double density(double r) const;  ///< rho_c theta^n(r / alpha) at radius r (0 beyond R)
+  LaneEmden le;
+  PolytropeScales scales;
+};
+
 }  // namespace sph::scenes

@@ -14,7 +14,7 @@ constexpr int kShells = 8;
 class PolytropeReference final : public Reference {
  public:
   PolytropeReference(const Params& prm, double M)
-      : le_(1.0 / (prm.gas.gamma - 1.0)), s_(polytrope_scales(le_, M, prm.gas.K, prm.gravity.G)) {}
+      : star_(1.0 / (prm.gas.gamma - 1.0), M, prm.gas.K, prm.gravity.G) {}
   std::vector<RefColumn> columns() const override {
     return {{"R", "Lane-Emden radius alpha xi_1 [length]", false},
             {"profile_err", "largest |<rho>/<rho_LE> - 1| over 8 shells inside 0.8 R about the centre of mass", true},
@@ -35,16 +35,16 @@ class PolytropeReference final : public Reference {
       const double r = (p.pos(i) - c).norm();
       if (hydro) thermal += 3.0 * m[i] * p[Field::Pressure][i] / p[Field::Density][i];
       if (grav) W += 0.5 * m[i] * p[Field::Potential][i];
-      const int k = static_cast<int>(r / (0.8 * s_.R) * kShells);
+      const int k = static_cast<int>(r / (0.8 * star_.scales.R) * kShells);
       if (k >= kShells || !hydro) continue;
       sum[k] += p[Field::Density][i];
-      sum_le[k] += s_.rho_c * std::pow(le_.theta(r / s_.alpha), le_.n());
+      sum_le[k] += star_.density(r);
     }
     double worst = 0.0;
     for (int k = 0; k < kShells; ++k)
       if (sum_le[k] > 0.0) worst = std::max(worst, relative_error(sum[k], sum_le[k]));
     const double virial = W != 0.0 ? thermal / std::abs(W) : std::nan("");
-    return {s_.R, hydro ? worst : std::nan(""), virial, std::abs(virial - 1.0)};
+    return {star_.scales.R, hydro ? worst : std::nan(""), virial, std::abs(virial - 1.0)};
   }
   std::string description() const override {
     return "polytrope: SPH density in 8 shells inside 0.8 R against the Lane-Emden profile (seed 003 eqs. 3.72-3.78), "
@@ -58,17 +58,16 @@ class PolytropeReference final : public Reference {
     e.field = "rho";
     e.axis = 3;  // the distance from the origin
     for (int k = 0; k <= 200; ++k) {
-      const double r = s_.R * k / 200.0;
+      const double r = star_.scales.R * k / 200.0;
       e.x.push_back(static_cast<float>(r));
-      e.value.push_back(static_cast<float>(s_.rho_c * std::pow(le_.theta(r / s_.alpha), le_.n())));
+      e.value.push_back(static_cast<float>(star_.density(r)));
     }
     c.profiles.push_back(std::move(e));
     return c;
   }
 
  private:
-  LaneEmden le_;
-  PolytropeScales s_;
+  Polytrope star_;
 };
 
 }  // namespace
