@@ -35,6 +35,14 @@ TEST(Fields, FieldSetHoldsEveryField) {
   EXPECT_EQ(FieldSet{}.count(), 0u);
 }
 
+TEST(Fields, ListedSetsAndLeadingComponents) {
+  EXPECT_TRUE((FieldSet{Field::Density, Field::Energy}) == FieldSet{}.add(Field::Density).add(Field::Energy));
+  const FieldSet planar = FieldSet{}.add_vector(Field::XsphX, 2).add_tensor(Field::VelGradXX, 2);
+  EXPECT_TRUE(planar == (FieldSet{Field::XsphX, Field::XsphY, Field::VelGradXX, Field::VelGradXY,
+                                  Field::VelGradYX, Field::VelGradYY}));
+  EXPECT_TRUE(FieldSet{}.add_tensor(Field::CorrXX, 1) == FieldSet{Field::CorrXX});
+}
+
 TEST(Fields, SetAlgebraAcrossTheThirtyTwoBitBoundary) {
   const FieldSet low = FieldSet{}.add(Field::Mass).add(Field::Density);
   const FieldSet high = FieldSet{}.add_tensor(Field::VelGradXX);  // indices 29..37

@@ -6,6 +6,7 @@
 #include <bitset>
 #include <cstddef>
 #include <cstdint>
+#include <initializer_list>
 #include <string_view>
 
 namespace sph {
@@ -52,10 +53,16 @@ constexpr Field component(Field first, int k, int l) {
 class FieldSet {
  public:
   FieldSet() = default;
+  FieldSet(std::initializer_list<Field> fields) { for (Field f : fields) add(f); }
   FieldSet& add(Field f) { bits_.set(index(f)); return *this; }
-  /// Adds the three components of a vector field, or the nine of a tensor field.
-  FieldSet& add_vector(Field first) { for (int k = 0; k < 3; ++k) add(component(first, k)); return *this; }
-  FieldSet& add_tensor(Field first) { for (int k = 0; k < 9; ++k) add(static_cast<Field>(index(first) + k)); return *this; }
+  /// Adds the components k < dim of a vector field, or (k, l) with k, l < dim of a tensor field: all three
+  /// or nine by default.
+  FieldSet& add_vector(Field first, int dim = 3) { for (int k = 0; k < dim; ++k) add(component(first, k)); return *this; }
+  FieldSet& add_tensor(Field first, int dim = 3) {
+    for (int k = 0; k < dim; ++k)
+      for (int l = 0; l < dim; ++l) add(component(first, k, l));
+    return *this;
+  }
   bool has(Field f) const { return bits_.test(index(f)); }
   bool empty() const { return bits_.none(); }
   std::size_t count() const { return bits_.count(); }
