@@ -16,12 +16,11 @@ namespace {
 
 class WallsDummy final : public Stage {
  public:
-  std::string_view name() const override { return "walls: dummy particles"; }
-  FieldSet needs() const override { return FieldSet{}.add(Field::Mass).add(Field::H); }
-  FieldSet writes() const override {
-    return FieldSet{}.add(Field::Pressure).add(Field::Density).add(Field::SoundSpeed);
-  }
-  FieldSet shares() const override { return writes(); }
+  WallsDummy()
+      : Stage({.name = "walls: dummy particles",
+               .needs = {Field::Mass, Field::H},
+               .writes = {Field::Pressure, Field::Density, Field::SoundSpeed},
+               .shares = {Field::Pressure, Field::Density, Field::SoundSpeed}}) {}
   bool run(StageContext& c) override {
     const Kernel& K = c.kernel;
     Particles& p = c.p;

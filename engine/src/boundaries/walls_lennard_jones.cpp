@@ -20,8 +20,7 @@ LjConstants constants(const StageContext& c) {
 
 class WallsLennardJones final : public Stage {
  public:
-  std::string_view name() const override { return "walls: Lennard-Jones"; }
-  FieldSet needs() const override { return FieldSet{}.add(Field::Mass); }
+  WallsLennardJones() : Stage({.name = "walls: Lennard-Jones", .needs = {Field::Mass}}) {}
   bool run(StageContext& c) override {
     Particles& p = c.p;
     const std::size_t n = p.fluid();

@@ -49,17 +49,26 @@ struct StageContext {
 /// An evolved state field and the field holding its time derivative (e.g. rho and drho/dt).
 using EvolvedPair = std::pair<Field, Field>;
 
+/// What a stage declares to the pipeline: its name and the fields it reads, computes and shares.
+struct StageContract {
+  std::string_view name;
+  /// Fields read (they must be allocated; some other stage or the scene writes them).
+  FieldSet needs = {};
+  /// Fields computed at every evaluation.
+  FieldSet writes = {};
+  /// Of those, the ones neighbours read: copied to the ghosts after run().
+  FieldSet shares = {};
+};
+
 class Stage {
  public:
   static constexpr double kNoLimit = std::numeric_limits<double>::infinity();
   virtual ~Stage() = default;
-  virtual std::string_view name() const = 0;
-  /// Fields read (they must be allocated; some other stage or the scene writes them).
-  virtual FieldSet needs() const { return {}; }
-  /// Fields computed at every evaluation.
-  virtual FieldSet writes() const { return {}; }
-  /// Of those, the ones neighbours read: copied to the ghosts after run().
-  virtual FieldSet shares() const { return {}; }
+  /// The contract the stage was built with (StageContract).
+  std::string_view name() const { return contract_.name; }
+  FieldSet needs() const { return contract_.needs; }
+  FieldSet writes() const { return contract_.writes; }
+  FieldSet shares() const { return contract_.shares; }
   /// State fields advanced by the integrator, with their rates.
   virtual std::vector<EvolvedPair> evolves() const { return {}; }
   /// False if the stage never reads the neighbour lists (self-gravity, a body force): a pipeline of
@@ -94,6 +103,12 @@ class Stage {
   virtual std::vector<std::vector<double>> saved_state() const { return {}; }
   /// Takes back what saved_state() gave (of a stage of the same type). Returns false if it does not fit.
   virtual bool restore_state(const std::vector<std::vector<double>>& s) { return s.empty(); }
+
+ protected:
+  explicit Stage(StageContract contract) : contract_(contract) {}
+
+ private:
+  StageContract contract_;
 };
 
 }  // namespace sph

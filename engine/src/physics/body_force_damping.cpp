@@ -9,7 +9,7 @@ namespace {
 
 class BodyForceDamping final : public Stage {
  public:
-  std::string_view name() const override { return "body force: damping -v/tau"; }
+  BodyForceDamping() : Stage({.name = "body force: damping -v/tau"}) {}
   bool uses_neighbours() const override { return false; }
   bool run(StageContext& c) override {
     Particles& p = c.p;

@@ -7,8 +7,7 @@ namespace {
 
 class BodyForceUniform final : public Stage {
  public:
-  std::string_view name() const override { return "body force: uniform g"; }
-  FieldSet needs() const override { return FieldSet{}.add(Field::Mass); }
+  BodyForceUniform() : Stage({.name = "body force: uniform g", .needs = {Field::Mass}}) {}
   bool uses_neighbours() const override { return false; }
   bool run(StageContext& c) override {
     Particles& p = c.p;

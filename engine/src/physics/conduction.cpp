@@ -6,8 +6,7 @@
 namespace sph {
 
 std::unique_ptr<Stage> make_conduction() {
-  return std::make_unique<DeclaredStage>("conduction: Price 2008",
-                                         FieldSet{}.add(Field::Energy).add(Field::Pressure));
+  return std::make_unique<DeclaredStage>("conduction: Price 2008", FieldSet{Field::Energy, Field::Pressure});
 }
 
 }  // namespace sph

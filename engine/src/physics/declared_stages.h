@@ -9,14 +9,10 @@ namespace sph {
 class DeclaredStage : public Stage {
  public:
   DeclaredStage(std::string_view name, FieldSet needs, std::vector<EvolvedPair> evolves = {})
-      : name_(name), needs_(needs), evolves_(std::move(evolves)) {}
-  std::string_view name() const override { return name_; }
-  FieldSet needs() const override { return needs_; }
+      : Stage({.name = name, .needs = needs}), evolves_(std::move(evolves)) {}
   std::vector<EvolvedPair> evolves() const override { return evolves_; }
 
  private:
-  std::string_view name_;
-  FieldSet needs_;
   std::vector<EvolvedPair> evolves_;
 };
 

@@ -23,10 +23,8 @@ namespace {
 class DensityContinuity final : public Stage {
  public:
   explicit DensityContinuity(const Physics& ph)
-      : corrected_(ph.corrected()), xsph_(ph.xsph == Toggle::On), fused_(fuses_continuity(ph)) {}
-  std::string_view name() const override { return "density: continuity"; }
-  FieldSet needs() const override { return FieldSet{}.add(Field::Mass).add(Field::H); }
-  FieldSet writes() const override { return FieldSet{}.add(Field::Neighbours); }
+      : Stage({.name = "density: continuity", .needs = {Field::Mass, Field::H}, .writes = {Field::Neighbours}}),
+        corrected_(ph.corrected()), xsph_(ph.xsph == Toggle::On), fused_(fuses_continuity(ph)) {}
   std::vector<EvolvedPair> evolves() const override { return {{Field::Density, Field::DensityRate}}; }
 
   bool acts_after(const Params& prm, std::int64_t step) const override {

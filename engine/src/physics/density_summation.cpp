@@ -188,13 +188,12 @@ void record_stats(StageContext& c, std::size_t bisections) {
 
 class DensitySummation final : public Stage {
  public:
-  DensitySummation(bool volume, bool fixed) : volume_(volume), fixed_(fixed) {}
-  std::string_view name() const override { return volume_ ? "density: volume 1/V = sum W" : "density: summation"; }
-  FieldSet needs() const override { return FieldSet{}.add(Field::Mass).add(Field::H); }
-  FieldSet writes() const override {
-    return FieldSet{}.add(Field::Density).add(Field::H).add(Field::Omega).add(Field::Neighbours).add(Field::HIterations);
-  }
-  FieldSet shares() const override { return FieldSet{}.add(Field::Density).add(Field::H).add(Field::Omega); }
+  DensitySummation(bool volume, bool fixed)
+      : Stage({.name = volume ? "density: volume 1/V = sum W" : "density: summation",
+               .needs = {Field::Mass, Field::H},
+               .writes = {Field::Density, Field::H, Field::Omega, Field::Neighbours, Field::HIterations},
+               .shares = {Field::Density, Field::H, Field::Omega}}),
+        volume_(volume), fixed_(fixed) {}
 
   bool run(StageContext& c) override {
     const bool skip = c.prm.physics.walls == WallType::LennardJones;

@@ -6,7 +6,7 @@
 namespace sph {
 
 std::unique_ptr<Stage> make_energy_equation() {
-  return std::make_unique<DeclaredStage>("energy equation", FieldSet{}.add(Field::Energy),
+  return std::make_unique<DeclaredStage>("energy equation", FieldSet{Field::Energy},
                                          std::vector<EvolvedPair>{{Field::Energy, Field::EnergyRate}});
 }
 

@@ -11,10 +11,11 @@ namespace sph {
 template <class Model>
 class BarotropicEos final : public Stage {
  public:
-  std::string_view name() const override { return Model::name(); }
-  FieldSet needs() const override { return FieldSet{}.add(Field::Density); }
-  FieldSet writes() const override { return FieldSet{}.add(Field::Pressure).add(Field::SoundSpeed); }
-  FieldSet shares() const override { return writes(); }
+  BarotropicEos()
+      : Stage({.name = Model::name(),
+               .needs = {Field::Density},
+               .writes = {Field::Pressure, Field::SoundSpeed},
+               .shares = {Field::Pressure, Field::SoundSpeed}}) {}
   bool run(StageContext& c) override {
     Particles& p = c.p;
     const std::size_t n = p.fluid();

@@ -10,10 +10,11 @@ namespace {
 
 class EosIdealGas final : public Stage {
  public:
-  std::string_view name() const override { return "EOS: ideal gas"; }
-  FieldSet needs() const override { return FieldSet{}.add(Field::Density).add(Field::Energy); }
-  FieldSet writes() const override { return FieldSet{}.add(Field::Pressure).add(Field::SoundSpeed); }
-  FieldSet shares() const override { return writes().add(Field::Energy); }
+  EosIdealGas()
+      : Stage({.name = "EOS: ideal gas",
+               .needs = {Field::Density, Field::Energy},
+               .writes = {Field::Pressure, Field::SoundSpeed},
+               .shares = {Field::Pressure, Field::SoundSpeed, Field::Energy}}) {}
   bool run(StageContext& c) override {
     Particles& p = c.p;
     const std::size_t n = p.fluid();

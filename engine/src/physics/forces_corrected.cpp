@@ -109,12 +109,11 @@ class StressLoop {
 
 class ForcesCorrected final : public Stage {
  public:
-  ForcesCorrected(const Physics& ph, int dim) : stress_(ph.viscosity == ViscType::Laplacian), dim_(dim) {}
-  std::string_view name() const override { return "forces: corrected (stress form)"; }
-  FieldSet needs() const override {
-    return FieldSet{}.add(Field::Mass).add(Field::Density).add(Field::H).add(Field::Pressure).add(Field::SoundSpeed);
-  }
-  FieldSet writes() const override { return FieldSet{}.add(Field::SignalSpeed); }
+  ForcesCorrected(const Physics& ph, int dim)
+      : Stage({.name = "forces: corrected (stress form)",
+               .needs = {Field::Mass, Field::Density, Field::H, Field::Pressure, Field::SoundSpeed},
+               .writes = {Field::SignalSpeed}}),
+        stress_(ph.viscosity == ViscType::Laplacian), dim_(dim) {}
   bool sets_acceleration() const override { return true; }
 
   bool run(StageContext& c) override {

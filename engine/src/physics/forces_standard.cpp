@@ -60,26 +60,27 @@ void dispatch_visc(StageContext& c, bool energy, bool cont, const Shape& s, Fact
   });
 }
 
+/// A summation density brings the grad-h terms (Omega).
+bool uses_grad_h(const Physics& ph) {
+  return ph.density == DensityMode::Summation || ph.density == DensityMode::Volume;
+}
+
+/// Reads the momentum equation's fields (Omega with grad-h terms); writes the signal speed, and the
+/// continuity rate and dh/dt when the loop sums them.
+StageContract contract(const Physics& ph) {
+  StageContract c{.name = "forces: standard",
+                  .needs = {Field::Mass, Field::Density, Field::H, Field::Pressure, Field::SoundSpeed},
+                  .writes = {Field::SignalSpeed}};
+  if (uses_grad_h(ph)) c.needs.add(Field::Omega);
+  if (fuses_continuity(ph)) c.writes.add(Field::DensityRate).add(Field::Neighbours);
+  if (ph.density == DensityMode::Summation && ph.smoothing == HMode::Variable) c.writes.add(Field::HRate);
+  return c;
+}
+
 class ForcesStandard final : public Stage {
  public:
   explicit ForcesStandard(const Physics& ph)
-      : grad_h_(ph.density == DensityMode::Summation || ph.density == DensityMode::Volume),
-        energy_(ph.energy == Toggle::On), cont_(fuses_continuity(ph)),
-        hrate_(ph.density == DensityMode::Summation && ph.smoothing == HMode::Variable) {}
-  std::string_view name() const override { return "forces: standard"; }
-  FieldSet needs() const override {
-    FieldSet f;
-    f.add(Field::Mass).add(Field::Density).add(Field::H).add(Field::Pressure).add(Field::SoundSpeed);
-    if (grad_h_) f.add(Field::Omega);
-    return f;
-  }
-  FieldSet writes() const override {
-    FieldSet f;
-    f.add(Field::SignalSpeed);
-    if (cont_) f.add(Field::DensityRate).add(Field::Neighbours);
-    if (hrate_) f.add(Field::HRate);
-    return f;
-  }
+      : Stage(contract(ph)), grad_h_(uses_grad_h(ph)), energy_(ph.energy == Toggle::On), cont_(fuses_continuity(ph)) {}
   bool sets_acceleration() const override { return true; }
   bool run(StageContext& c) override {
     // the kernel shape is chosen once here, not per pair
@@ -92,7 +93,7 @@ class ForcesStandard final : public Stage {
   double dt_limit(const StageContext& c) const override { return courant_limit(c.p); }
 
  private:
-  bool grad_h_, energy_, cont_, hrate_;
+  bool grad_h_, energy_, cont_;
   Factors factors_;
 };
 

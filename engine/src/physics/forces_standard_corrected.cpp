@@ -50,20 +50,20 @@ void dispatch(StageContext& c, bool cont, bool xsph, Factors& f) {
   });
 }
 
+/// Reads the momentum equation's fields; writes the signal speed, and the continuity rate when the
+/// loop sums it.
+StageContract contract(const Physics& ph) {
+  StageContract c{.name = "forces: standard-corrected",
+                  .needs = {Field::Mass, Field::Density, Field::H, Field::Pressure, Field::SoundSpeed},
+                  .writes = {Field::SignalSpeed}};
+  if (fuses_continuity(ph)) c.writes.add(Field::DensityRate).add(Field::Neighbours);
+  return c;
+}
+
 class ForcesStandardCorrected final : public Stage {
  public:
   ForcesStandardCorrected(const Physics& ph, int dim)
-      : dim_(dim), cont_(fuses_continuity(ph)), xsph_(ph.xsph == Toggle::On) {}
-  std::string_view name() const override { return "forces: standard-corrected"; }
-  FieldSet needs() const override {
-    return FieldSet{}.add(Field::Mass).add(Field::Density).add(Field::H).add(Field::Pressure).add(Field::SoundSpeed);
-  }
-  FieldSet writes() const override {
-    FieldSet f;
-    f.add(Field::SignalSpeed);
-    if (cont_) f.add(Field::DensityRate).add(Field::Neighbours);
-    return f;
-  }
+      : Stage(contract(ph)), dim_(dim), cont_(fuses_continuity(ph)), xsph_(ph.xsph == Toggle::On) {}
   bool sets_acceleration() const override { return true; }
   bool run(StageContext& c) override {
     switch (dim_) {

@@ -31,17 +31,19 @@
 namespace sph {
 namespace {
 
+/// Reads the points' masses, h and initial places; the upwind scheme writes the drift (-u/2).
+StageContract contract(FpmType type) {
+  const bool upwind = type == FpmType::BurgersUpwind;
+  StageContract c{.name = upwind ? "FPM Burgers: upwind (seed 002 eqs. 18-21)"
+                                 : "FPM Burgers: viscous (seed 002 eqs. 16-17)",
+                  .needs = {Field::Mass, Field::H, Field::RestX}};
+  if (upwind) c.writes.add_vector(Field::XsphX);
+  return c;
+}
+
 class FpmBurgers final : public Stage {
  public:
-  explicit FpmBurgers(FpmType type) : type_(type) {}
-  std::string_view name() const override {
-    return type_ == FpmType::BurgersUpwind ? "FPM Burgers: upwind (seed 002 eqs. 18-21)"
-                                           : "FPM Burgers: viscous (seed 002 eqs. 16-17)";
-  }
-  FieldSet needs() const override { return FieldSet{}.add(Field::Mass).add(Field::H).add(Field::RestX); }
-  FieldSet writes() const override {
-    return type_ == FpmType::BurgersUpwind ? FieldSet{}.add_vector(Field::XsphX) : FieldSet{};
-  }
+  explicit FpmBurgers(FpmType type) : Stage(contract(type)), type_(type) {}
   bool sets_acceleration() const override { return true; }
 
   bool run(StageContext& c) override {

@@ -134,21 +134,19 @@ std::size_t correct(StageContext& c, std::vector<double>& vol) {
   return shape::with_shape(c.kernel.type(), D, [&](auto s) { return correct<D>(c, s, vol); });
 }
 
+/// S, c and A up to the dimension: what the neighbours' corrected gradients read.
+FieldSet correction_fields(int dim) {
+  return FieldSet{Field::Shepard}.add_vector(Field::CorrCX, dim).add_tensor(Field::CorrXX, dim);
+}
+
 class GradientCorrection final : public Stage {
  public:
-  explicit GradientCorrection(int dim) : dim_(dim) {}
-  std::string_view name() const override { return "kernel-gradient correction"; }
-  FieldSet needs() const override { return FieldSet{}.add(Field::Mass).add(Field::Density).add(Field::H); }
-  FieldSet writes() const override { return shares().add(Field::CorrFallback); }
-  FieldSet shares() const override {
-    FieldSet f;
-    f.add(Field::Shepard);
-    for (int k = 0; k < dim_; ++k) {
-      f.add(component(Field::CorrCX, k));
-      for (int l = 0; l < dim_; ++l) f.add(component(Field::CorrXX, k, l));
-    }
-    return f;
-  }
+  explicit GradientCorrection(int dim)
+      : Stage({.name = "kernel-gradient correction",
+               .needs = {Field::Mass, Field::Density, Field::H},
+               .writes = correction_fields(dim).add(Field::CorrFallback),
+               .shares = correction_fields(dim)}),
+        dim_(dim) {}
   bool run(StageContext& c) override {
     switch (dim_) {
       case 1: c.stats.correction_fallbacks = correct<1>(c, vol_); break;

@@ -19,12 +19,11 @@ namespace {
 
 class SelfGravity final : public Stage {
  public:
-  explicit SelfGravity(GravityType type) : type_(type) {}
-  std::string_view name() const override {
-    return type_ == GravityType::Tree ? "self-gravity: Barnes-Hut tree" : "self-gravity: direct summation";
-  }
-  FieldSet needs() const override { return FieldSet{}.add(Field::Mass).add(Field::H); }
-  FieldSet writes() const override { return FieldSet{}.add(Field::Potential); }
+  explicit SelfGravity(GravityType type)
+      : Stage({.name = type == GravityType::Tree ? "self-gravity: Barnes-Hut tree" : "self-gravity: direct summation",
+               .needs = {Field::Mass, Field::H},
+               .writes = {Field::Potential}}),
+        type_(type) {}
   bool uses_neighbours() const override { return false; }
 
   bool run(StageContext& c) override {

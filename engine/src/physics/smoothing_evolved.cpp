@@ -11,11 +11,12 @@ namespace {
 
 class SmoothingEvolved final : public Stage {
  public:
-  explicit SmoothingEvolved(int dim) : dim_(dim) {}
-  std::string_view name() const override { return "smoothing length: evolved"; }
-  FieldSet needs() const override { return FieldSet{}.add(Field::Mass).add(Field::Density); }
-  FieldSet writes() const override { return FieldSet{}.add(Field::H); }
-  FieldSet shares() const override { return writes(); }
+  explicit SmoothingEvolved(int dim)
+      : Stage({.name = "smoothing length: evolved",
+               .needs = {Field::Mass, Field::Density},
+               .writes = {Field::H},
+               .shares = {Field::H}}),
+        dim_(dim) {}
   bool run(StageContext& c) override {
     Particles& p = c.p;
     const std::size_t n = p.fluid();

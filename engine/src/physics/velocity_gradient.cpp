@@ -12,16 +12,12 @@ namespace {
 
 class VelocityGradient final : public Stage {
  public:
-  explicit VelocityGradient(int dim) : dim_(dim) {}
-  std::string_view name() const override { return "velocity gradient (corrected)"; }
-  FieldSet needs() const override { return FieldSet{}.add(Field::Mass).add(Field::Density).add(Field::H); }
-  FieldSet writes() const override {
-    FieldSet f;
-    for (int k = 0; k < dim_; ++k)
-      for (int l = 0; l < dim_; ++l) f.add(component(Field::VelGradXX, k, l));
-    return f;
-  }
-  FieldSet shares() const override { return writes(); }
+  explicit VelocityGradient(int dim)
+      : Stage({.name = "velocity gradient (corrected)",
+               .needs = {Field::Mass, Field::Density, Field::H},
+               .writes = FieldSet{}.add_tensor(Field::VelGradXX, dim),
+               .shares = FieldSet{}.add_tensor(Field::VelGradXX, dim)}),
+        dim_(dim) {}
   bool run(StageContext& c) override {
     const Kernel& K = c.kernel;
     Particles& p = c.p;

@@ -11,8 +11,7 @@ namespace {
 
 class ViscosityLaplacian final : public Stage {
  public:
-  std::string_view name() const override { return "viscosity: Laplacian"; }
-  FieldSet needs() const override { return FieldSet{}.add(Field::Density).add(Field::H); }
+  ViscosityLaplacian() : Stage({.name = "viscosity: Laplacian", .needs = {Field::Density, Field::H}}) {}
   double dt_limit(const StageContext& c) const override {
     const double nu = c.prm.visc.nu;
     if (!(nu > 0.0)) return kNoLimit;

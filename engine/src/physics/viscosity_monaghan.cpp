@@ -7,7 +7,7 @@
 namespace sph {
 
 std::unique_ptr<Stage> make_viscosity_monaghan() {
-  return std::make_unique<DeclaredStage>("viscosity: Monaghan Pi", FieldSet{}.add(Field::SoundSpeed));
+  return std::make_unique<DeclaredStage>("viscosity: Monaghan Pi", FieldSet{Field::SoundSpeed});
 }
 
 }  // namespace sph

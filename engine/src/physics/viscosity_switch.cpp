@@ -22,20 +22,20 @@
 namespace sph {
 namespace {
 
+/// Reads the kernel sums' fields (Omega with grad-h terms); writes div v, |curl v| and alpha, and
+/// shares alpha (the force loop reads it of the neighbours).
+StageContract contract(ViscSwitch s, bool grad_h) {
+  StageContract c{.name = s == ViscSwitch::Balsara ? "viscosity switch: Balsara" : "viscosity switch: Cullen-Dehnen",
+                  .needs = {Field::Mass, Field::Density, Field::H, Field::SoundSpeed},
+                  .writes = {Field::DivV, Field::CurlV, Field::ViscAlpha},
+                  .shares = {Field::ViscAlpha}};
+  if (grad_h) c.needs.add(Field::Omega);
+  return c;
+}
+
 class ViscositySwitch final : public Stage {
  public:
-  explicit ViscositySwitch(ViscSwitch s, bool grad_h) : switch_(s), grad_h_(grad_h) {}
-  std::string_view name() const override {
-    return switch_ == ViscSwitch::Balsara ? "viscosity switch: Balsara" : "viscosity switch: Cullen-Dehnen";
-  }
-  FieldSet needs() const override {
-    FieldSet f;
-    f.add(Field::Mass).add(Field::Density).add(Field::H).add(Field::SoundSpeed);
-    if (grad_h_) f.add(Field::Omega);
-    return f;
-  }
-  FieldSet writes() const override { return FieldSet{}.add(Field::DivV).add(Field::CurlV).add(Field::ViscAlpha); }
-  FieldSet shares() const override { return FieldSet{}.add(Field::ViscAlpha); }
+  explicit ViscositySwitch(ViscSwitch s, bool grad_h) : Stage(contract(s, grad_h)), switch_(s), grad_h_(grad_h) {}
 
   bool run(StageContext& c) override {
     Particles& p = c.p;

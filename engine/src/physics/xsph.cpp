@@ -13,10 +13,11 @@ namespace {
 
 class Xsph final : public Stage {
  public:
-  std::string_view name() const override { return "XSPH"; }
-  FieldSet needs() const override { return FieldSet{}.add(Field::Mass).add(Field::Density).add(Field::H); }
-  FieldSet writes() const override { return FieldSet{}.add_vector(Field::XsphX); }
-  FieldSet shares() const override { return writes(); }
+  Xsph()
+      : Stage({.name = "XSPH",
+               .needs = {Field::Mass, Field::Density, Field::H},
+               .writes = {Field::XsphX, Field::XsphY, Field::XsphZ},
+               .shares = {Field::XsphX, Field::XsphY, Field::XsphZ}}) {}
   bool run(StageContext& c) override {
     const Kernel& K = c.kernel;
     Particles& p = c.p;
