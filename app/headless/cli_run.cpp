@@ -117,14 +117,29 @@ void open_files(const RunOptions& opt, const ResumePoint* resume, const RunConfi
 }
 
 /// After a step: the diagnostics rows, and the particles when an output time (or the end) was reached.
-void write_step(RunFiles& files, const World& world, const World* b, double t_end) {
+void write_step(RunFiles& files, World& world, World* b, double t_end) {
+  const bool output = reached(world, files.next_out * files.dt_out) || world.time() >= t_end;
+  if (output) {  // a gravity scene's energy checked at each output too (a blow-up is not written)
+    world.check_output();
+    if (b) b->check_output();
+  }
   if (files.out) files.out->write_diagnostics(world);
   if (files.out_b) files.out_b->write_diagnostics(*b);
-  if (reached(world, files.next_out * files.dt_out) || world.time() >= t_end) {
+  if (output) {
     if (files.out) files.out->write_particles(world);
     if (files.out_b) files.out_b->write_particles(*b);
     while (reached(world, files.next_out * files.dt_out)) ++files.next_out;
   }
+}
+
+/// kInaccurate after a message when a gravity scene's energy drifted beyond its bound (the warning names
+/// it), else kOk.
+int energy_code(const RunConfig& cfg, const World& world, const World* b) {
+  const bool a_bad = world.checks().energy_beyond_bound(cfg);
+  if (!a_bad && !(b && b->checks().energy_beyond_bound(b->config()))) return kOk;
+  std::fprintf(stderr, "sph: the energy drifted beyond the scene's bound%s (see the warnings): the result is not to "
+               "be trusted\n", !b ? "" : a_bad ? " (run A)" : " (run B)");
+  return kInaccurate;
 }
 
 /// The run once its worlds exist: the frames checked, the files opened, the steps to t_end with the files
@@ -181,10 +196,9 @@ int run_worlds(const RunOptions& opt, const ResumePoint* resume, const RunConfig
   print_warnings(world);
   if (b) print_warnings(*b);
 #ifdef SPH_HAVE_FRAMES
-  return frames->finish();
-#else
-  return kOk;
+  if (const int rc = frames->finish(); rc != kOk) return rc;
 #endif
+  return energy_code(cfg, world, b);
 }
 
 }  // namespace

@@ -14,6 +14,8 @@ enum ExitCode : int {
                       ///< the h solve cannot reach: the run stopped, nothing of the bad state was written
   kBadLesson = 6,     ///< `sph lesson`: malformed lesson file (the message names the file and the key)
   kClaimFalse = 7,    ///< `sph lesson check`: a step's claim is false (the measured numbers are printed)
+  kInaccurate = 8,    ///< a gravity scene's energy drifted beyond its bound: the run ended and wrote its
+                      ///< outputs and the warning, but its result is not to be trusted
   kInterrupted = 130, ///< SIGINT (Ctrl-C): the run stopped after a step and wrote a checkpoint (sph resume DIR)
   kTerminated = 143,  ///< SIGTERM: the same
 };

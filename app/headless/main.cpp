@@ -20,7 +20,8 @@ int main(int argc, char** argv) {
                "file, unknown key, value out of range), 4 I/O error, 5 diverged (NaN/inf in the state, a\n"
                "finite blow-up of the energy or the timestep, a particle through a wall, a start the h solve\n"
                "cannot reach), 6 malformed lesson file (sph lesson), 7 a lesson's claim is false (sph lesson\n"
-               "check), 130/143 stopped by SIGINT/SIGTERM after a step with a checkpoint written\n"
+               "check), 8 inaccurate: a gravity scene's energy drifted beyond its bound (the outputs and the\n"
+               "warning are written), 130/143 stopped by SIGINT/SIGTERM after a step with a checkpoint written\n"
                "(continue with `sph resume DIR`; a second signal stops at once). 3 also: a checkpoint that is\n"
                "missing, truncated, damaged, of another version or not one. What a run tolerated is listed\n"
                "under \"warnings\" (and in warnings.csv)."};

@@ -49,11 +49,20 @@ class RunChecks {
   void check_h_solve(const DensityStats& d, std::int64_t step, double t);
   /// Throws DivergedError when E_tot has grown far beyond its initial scale (a finite blow-up); warns
   /// when a scene that conserves energy drifts beyond its SceneSpec::energy_bound. `diagnostics` is
-  /// called only on the steps that check.
+  /// called only on the steps that check (with `now`, this one: an output of a gravity scene).
   void check_energy(const RunConfig& cfg, const std::function<Diagnostics()>& diagnostics, const Particles& p,
-                    std::int64_t step, double t);
+                    std::int64_t step, double t, bool now = false);
   /// Warns when the run passes the time its reference applies to.
   void check_reference(const Reference* ref, std::int64_t step, double t);
+  /// At the start: warns when a fixed time.dt is too large for the pericentre passage of a bound pair of
+  /// point masses (h = 0, a few bodies) to keep the scene within its energy bound (run_checks_timestep.cpp).
+  void check_pericentres(const RunConfig& cfg, const Particles& p);
+  /// A gravity scene whose energy drifted beyond its bound: the run's result is not to be trusted (the
+  /// headless program exits non-zero after writing it).
+  bool energy_beyond_bound(const RunConfig& cfg) const {
+    return cfg.params.physics.gravity != GravityType::None && cfg.scene->energy_bound > 0.0 &&
+           worst_drift_ > cfg.scene->energy_bound;
+  }
 
   /// Checkpoint layout: the guards' scales, the crossings and the warnings (CheckpointError on a misfit).
   void save(ByteWriter& w) const;

@@ -69,6 +69,9 @@ class World {
   void set_list_reuse(bool on) { lists_.set_reuse(on); }
   /// The checks after every step: warnings() is what the run has tolerated so far.
   const RunChecks& checks() const { return checks_; }
+  /// Before an output is written: a gravity scene's energy checked now as well (RunChecks::check_energy;
+  /// throws DivergedError on a blow-up, so the bad state is not written).
+  void check_output();
   /// What the run reports now (diagnostics, reference values, snapshots, the inspector, costs): a view
   /// valid until the world next changes.
   Report report() const;

@@ -1,7 +1,8 @@
 // RunChecks: the checks after each step that keep a run from going bad silently: non-finite state
 // (stop), a collapsing timestep or a finite blow-up of the energy (stop), particles escaping through
 // walls (stop) or crossing them (warn), energy drift beyond the scene's bound (warn), an h solve that
-// did not converge (warn), and a run past the time its reference applies to (warn).
+// did not converge (warn), and a run past the time its reference applies to (warn). The start check of
+// a fixed timestep against pericentre passages is in run_checks_timestep.cpp.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -123,15 +124,19 @@ void RunChecks::check_h_solve(const DensityStats& d, std::int64_t step, double t
 }
 
 void RunChecks::check_energy(const RunConfig& cfg, const std::function<Diagnostics()>& diagnostics, const Particles& p,
-                             std::int64_t step, double t) {
+                             std::int64_t step, double t, bool now) {
   // Every stage conserves or dissipates E_kin + E_int + E_pot (the corrected forms to truncation error),
   // so a total energy that grows by many times its initial scale is a blow-up that has not (yet) reached
   // inf or NaN. A scene that conserves energy is checked every step against its bound (a pass over the
-  // particles); the others, and those with gravity (whose potential may need a tree walk of its own),
-  // every 16 steps.
+  // particles), and so are a few point masses summed directly (a pericentre passage may take a step or
+  // two); the others, and those with gravity (whose potential may need a tree walk of its own), every 16
+  // steps and at each output (`now`).
   const double bound = cfg.scene->energy_bound;
-  const bool every_step = bound > 0.0 && cfg.params.physics.gravity == GravityType::None;
-  if (step % 16 != 0 && energy_scale_ >= 0.0 && !every_step) return;
+  const GravityType gravity = cfg.params.physics.gravity;
+  const bool few_bodies = gravity == GravityType::Direct && p.fluid() <= 64;
+  const bool every_step = bound > 0.0 && (gravity == GravityType::None || few_bodies);
+  const bool due = step % 16 == 0 || every_step;
+  if (now ? due : !due && energy_scale_ >= 0.0) return;  // `now` after check_step: only what it skipped
   const Diagnostics d = diagnostics();
   if (energy_scale_ < 0.0) {
     energy_scale_ = std::abs(d.E_kin) + std::abs(d.E_int) + std::abs(d.E_pot);
@@ -153,11 +158,13 @@ void RunChecks::check_energy(const RunConfig& cfg, const std::function<Diagnosti
   if (bound > 0.0 && std::abs(drift) > bound && std::abs(drift) >= worst_drift_) {
     worst_drift_ = std::abs(drift);
     const bool euler = cfg.params.time.integrator == IntegratorType::Euler;
+    const bool fixed = gravity != GravityType::None && cfg.params.time.dt > 0.0;
     std::snprintf(what, sizeof what,
                   "E_tot drifted by %.2g of its initial scale, beyond this scene's bound %.2g: %s", drift, bound,
-                  euler ? "forward Euler is unstable for this problem (time.integrator: use leapfrog, "
-                          "predictor_corrector or rk4)"
-                        : "the result is degraded; lower time.cfl");
+                  euler   ? "forward Euler is unstable for this problem (time.integrator: use leapfrog, "
+                            "predictor_corrector or rk4)"
+                  : fixed ? "the result is degraded; lower time.dt or set time.dt = 0 (adaptive)"
+                          : "the result is degraded; lower time.cfl");
     warn("energy", -1, what, step, t, true);  // the message keeps the largest drift so far
   }
 }

@@ -75,6 +75,7 @@ World::World(const RunConfig& cfg)
   reorder();
   checks_.forget_crossings();  // storage indices changed; a start is placed inside its walls
   RunChecks::check_finite(p_, step_, t_);
+  checks_.check_pericentres(cfg_, p_);
 }
 
 World::~World() = default;
@@ -157,6 +158,11 @@ void World::check_step() {
   checks_.check_h_solve(stats_->density, step_, t_);
   checks_.check_energy(cfg_, [this] { return report().diagnostics(); }, p_, step_, t_);
   checks_.check_reference(reference_.get(), step_, t_);
+}
+
+void World::check_output() {
+  if (cfg_.params.physics.gravity == GravityType::None) return;
+  checks_.check_energy(cfg_, [this] { return report().diagnostics(); }, p_, step_, t_, true);
 }
 
 void World::bound() { checks_.tally(apply_boundaries(domain_, p_)); }
