@@ -31,17 +31,21 @@ complete() {
 
 case $mode in
 matrix)
-  # scene x integrator: to T uninterrupted; to T/2 with a checkpoint, resumed to T; T/2 is an output time
+  # scene x integrator: to T uninterrupted; to T/2 with a checkpoint, resumed to T; T/2 is an output time.
+  # Forward Euler takes the gravity scenes kepler and evrard beyond their energy bound: those runs end with
+  # exit 8 and the warning (README "Exit codes"; the first half of evrard's still within it), the files
+  # still identical.
   while read -r scene T sets; do
     for integ in euler leapfrog predictor_corrector rk4; do
       name="$scene/$integ"; a="$work/${scene}_${integ}_a"; b="$work/${scene}_${integ}_b"
+      want=0; case $name in kepler/euler | evrard/euler) want=8 ;; esac
       "$sph" run "$scene" $sets --set time.integrator=$integ --until "$T" --threads 1 --quiet --out "$a" 2> /dev/null
-      check "$name uninterrupted" 0 $?
+      check "$name uninterrupted" $want $?
       half=$(awk -v t="$T" 'BEGIN { printf "%.17g", t / 2 }')
       "$sph" run "$scene" $sets --set time.integrator=$integ --until "$half" --checkpoint-every "$half" --threads 1 \
         --quiet --out "$b" 2> /dev/null
-      check "$name first half" 0 $?
-      "$sph" resume "$b" --until "$T" --quiet 2> /dev/null; check "$name resumed" 0 $?
+      rc=$?; ok "$name first half (exit $rc)" test "$rc" -eq 0 -o "$rc" -eq "$want"
+      "$sph" resume "$b" --until "$T" --quiet 2> /dev/null; check "$name resumed" $want $?
       ok "$name: every file identical" same "$a" "$b"
       echo "$name: $(same "$a" "$b" > /dev/null && echo identical || echo DIFFERENT) ($(ls "$a" | wc -l) files)"
     done
@@ -49,7 +53,7 @@ matrix)
 sod 0.1 --set scene.n_left=100 --set time.dt_out=0.025
 dam_break 0.1 --set scene.dx=0.1 --set time.dt_out=0.025
 evrard 0.2 --set scene.n=300 --set time.dt_out=0.05
-kepler 1 --set time.dt_out=0.25
+kepler 0.1 --set time.dt=0.0005 --set time.dt_out=0.025
 burgers_upwind 0.5 --set time.dt_out=0.125
 SCENES
   # above the size where loops go parallel (4096): run on 1 thread, resumed on 2, the same files

@@ -1,7 +1,8 @@
 // The checks after each step that keep a run from going bad silently, and the warnings they leave:
 // non-finite state, a collapsing timestep or a finite energy blow-up (stop), particles escaping
 // through walls (stop) or crossing them, energy drift, an h solve that did not converge, a run past
-// its reference (warn). Owned by World; read through World::checks().
+// its reference (warn); at the start, a fixed timestep too long for a pericentre passage of point
+// masses (warn). Owned by World; read through World::checks().
 #pragma once
 #include <cstdint>
 #include <functional>
