@@ -8,7 +8,7 @@
 namespace sph::scenes {
 
 Particles make_particles(const Params& prm, int dim, std::size_t n) {
-  return Particles(dim, n, Pipeline(prm.physics, dim).fields());
+  return Particles(dim, n, Pipeline(prm, dim).fields());
 }
 
 double effective_eta(const Params& prm, int dim) {

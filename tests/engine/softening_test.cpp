@@ -1,5 +1,5 @@
 // The short-range laws of self-gravity: Plummer's closed form, and the tabulated kernel law against
-// its definition (enclosed mass, Newton beyond the support, force = -dphi/dr by finite differences).
+// its definition (enclosed mass, Newton beyond the support, force = -dphi/dr and dphi/dh by finite differences).
 #include "gravity/softening.h"
 
 #include <gtest/gtest.h>
@@ -42,6 +42,20 @@ TEST_P(KernelLaw, NewtonianBeyondTheSupportAndConsistent) {
     ks.eval(r - d, h, fb, pb);
     EXPECT_NEAR((pa - pb) / (2 * d), f * r, 2e-4 * f * r) << "q = " << q;
     EXPECT_LT(f, 1.0 / (r * r * r));  // softer than a point mass inside the support
+  }
+  // dphi/dh of the grad-h term against central differences in h (step 1e-4 h); zero beyond the support
+  for (double q : {0.0, 0.15, 0.3, 0.7, 1.0, 1.3, 1.9, 2.5}) {
+    const double r = q * h, d = 1e-4 * h;
+    double f, pa, pb;
+    ks.eval(r, h + d, f, pa);
+    ks.eval(r, h - d, f, pb);
+    const double fd = (pa - pb) / (2 * d), dphi = ks.dphi_dh(r, h);
+    if (q >= S) {
+      EXPECT_EQ(dphi, 0.0) << "q = " << q;
+    } else {
+      EXPECT_GT(dphi, 0.0) << "q = " << q;  // a larger h makes phi less negative
+      EXPECT_NEAR(dphi, fd, 1e-5 / (h * h)) << "q = " << q;
+    }
   }
   // finite at r = 0: the kernel's central density (4 pi / 3) W(0) / h^3 times 1
   double f0, p0;

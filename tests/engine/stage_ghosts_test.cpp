@@ -34,7 +34,7 @@ void check_ghosts(ForceType force, Boundary bx) {
   b.prepare(FieldSet{}.add(Field::Density));
   ASSERT_GT(b.p.total(), b.p.size());
   b.run_pipeline();
-  Pipeline pl(prm.physics, 2);
+  Pipeline pl(prm, 2);
   std::size_t checked = 0;
   for (const auto& stage : pl.stages()) {
     stage->shares().for_each([&](Field f) {

@@ -49,14 +49,14 @@ struct StageBench {
   }
   /// Runs every stage of prm.physics in pipeline order, as World::evaluate does (after prepare()).
   void run_pipeline() {
-    Pipeline pl(prm.physics, p.dim());
+    Pipeline pl(prm, p.dim());
     p.add_fields(pl.fields());
     for (const auto& s : pl.stages()) run(*s);
   }
 };
 
 /// A bench whose particles have every field of prm.physics's pipeline.
-inline FieldSet pipeline_fields(const Params& prm, int dim) { return Pipeline(prm.physics, dim).fields(); }
+inline FieldSet pipeline_fields(const Params& prm, int dim) { return Pipeline(prm, dim).fields(); }
 
 /// A jittered square lattice of n x n particles of spacing dx in [0, n dx]^2 (deterministic).
 inline void jittered_lattice(Particles& p, std::size_t n, double dx, double jitter, double h, double rho) {

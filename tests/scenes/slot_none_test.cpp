@@ -29,7 +29,7 @@ TEST(SlotNone, EverySlotAStageMayDropRuns) {
       World w(cfg);
       for (int s = 0; s < 3; ++s) ASSERT_NO_THROW(w.step()) << scene.name << " physics." << slot.key << " = none";
       // only the remaining stages' fields are allocated
-      EXPECT_EQ(w.particles().fields(), Pipeline(cfg.params.physics, scene.dim).fields()) << scene.name;
+      EXPECT_EQ(w.particles().fields(), Pipeline(cfg.params, scene.dim).fields()) << scene.name;
       ++ran;
     }
   }

@@ -36,6 +36,7 @@ enum class Field : std::uint8_t {
   DivV,        ///< div v = -(1/(Omega rho)) sum_b m_b v_ab . grad W_ab(h_a) [1/time]
   CurlV,       ///< |curl v| = |(1/(Omega rho)) sum_b m_b v_ab x grad W_ab(h_a)| [1/time]
   ViscAlpha,   ///< artificial viscosity alpha of the particle (visc.switch) [dimensionless]
+  GravZeta,    ///< zeta/Omega of kernel-softened gravity's grad-h term (Price & Monaghan 2007) [length^(d-1)]
   Count
 };
 
@@ -140,6 +141,7 @@ constexpr std::array<FieldInfo, kFieldCount> kFieldInfo{{
     {"divv", "velocity divergence div v", 0, true, false},
     {"curlv", "vorticity |curl v|", 0, true, false},
     {"alpha", "viscosity alpha (switch)", 0, true, true},
+    {"zeta", "gravity grad-h term zeta/Omega", 0, false, false},
 }};
 
 inline const FieldInfo& info(Field f) { return kFieldInfo[index(f)]; }

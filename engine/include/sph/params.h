@@ -17,8 +17,12 @@ enum class IntegratorType { Euler, RK4, Leapfrog, PredictorCorrector };
 /// How self-gravity is softened at short range.
 enum class Softening {
   Plummer,  ///< -G m x / (|x|^2 + eps^2)^(3/2) (seed 003 eq. 2.43, denominator corrected)
-  Kernel,   ///< the mass of each particle spread like the SPH kernel of its h (Price & Monaghan 2007)
+  Kernel,   ///< the mass of each particle spread like the SPH kernel of its h, with the grad-h (zeta) term
+            ///< that conserves energy as h changes (Price & Monaghan 2007)
+  KernelNoGradH,  ///< the kernel law without its grad-h term: energy leaks as h changes
 };
+/// Whether the law spreads each mass like the SPH kernel of its h.
+inline bool kernel_softened(Softening s) { return s != Softening::Plummer; }
 
 struct KernelParams {
   KernelType type = KernelType::M4;  ///< kernel family (live: takes effect at the next step)

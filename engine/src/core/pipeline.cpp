@@ -1,14 +1,15 @@
 // Pipeline order: density, smoothing length, EOS, wall pressure, corrections, velocity gradient, XSPH,
 // the viscosity switch,
 // forces (with viscosity, conduction and the energy equation fused into their loop), continuity rate,
-// wall forces, body force, self-gravity; the finite pointset method runs alone. A slot set to "none" contributes no stage.
+// wall forces, body force, self-gravity and its grad-h term; the finite pointset method runs alone. A slot set to "none" contributes no stage.
 #include "core/pipeline.h"
 
 #include "core/stages.h"
 
 namespace sph {
 
-Pipeline::Pipeline(const Physics& ph, int dim) {
+Pipeline::Pipeline(const Params& prm, int dim) {
+  const Physics& ph = prm.physics;
   auto add = [&](std::unique_ptr<Stage> s) { if (s) stages_.push_back(std::move(s)); };
   if (ph.density == DensityMode::Summation || ph.density == DensityMode::Volume) add(make_density_summation(ph, dim));
   if (ph.smoothing == HMode::Evolved) add(make_smoothing_evolved(dim));
@@ -39,6 +40,10 @@ Pipeline::Pipeline(const Physics& ph, int dim) {
   if (ph.body_force == BodyForce::Uniform) add(make_body_force_uniform());
   if (ph.body_force == BodyForce::Damping) add(make_body_force_damping());
   if (ph.gravity != GravityType::None) add(make_self_gravity(ph.gravity));
+  if (gravity_grad_h(prm)) {
+    add(make_gravity_zeta(dim));
+    add(make_gravity_grad_h());
+  }
   if (ph.fpm != FpmType::None) add(make_fpm_burgers(ph.fpm, dim));
 
   fields_.add(Field::Mass).add(Field::H);

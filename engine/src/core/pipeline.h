@@ -9,8 +9,9 @@ namespace sph {
 
 class Pipeline {
  public:
-  /// The stages of `ph` (assumed valid: Physics::validate) for a scene of dimension dim.
-  Pipeline(const Physics& ph, int dim);
+  /// The stages of `prm.physics` (assumed valid: Physics::validate) for a scene of dimension dim; the
+  /// softening adds the grad-h stages of kernel-softened gravity.
+  Pipeline(const Params& prm, int dim);
   const std::vector<std::unique_ptr<Stage>>& stages() const { return stages_; }
   /// Every field a stage reads, writes or evolves, plus mass and h.
   FieldSet fields() const { return fields_; }

@@ -35,6 +35,15 @@ std::unique_ptr<Stage> make_walls_lennard_jones();
 std::unique_ptr<Stage> make_body_force_uniform();
 std::unique_ptr<Stage> make_body_force_damping();
 std::unique_ptr<Stage> make_self_gravity(GravityType type);  // direct | tree
+/// The grad-h term of kernel-softened gravity: zeta, then its force (physics/gravity_grad_h.cpp).
+std::unique_ptr<Stage> make_gravity_zeta(int dim);
+std::unique_ptr<Stage> make_gravity_grad_h();
+/// Whether a run takes the grad-h term: kernel softening of h from the summation density's solve.
+inline bool gravity_grad_h(const Params& p) {
+  const Physics& ph = p.physics;
+  return ph.gravity != GravityType::None && p.gravity.softening == Softening::Kernel &&
+         ph.density == DensityMode::Summation && ph.smoothing == HMode::Variable;
+}
 std::unique_ptr<Stage> make_fpm_burgers(FpmType type, int dim);  // seed 002: viscous | upwind
 
 }  // namespace sph

@@ -28,7 +28,7 @@ BarnesHutTree::Opening BarnesHutTree::opening(const PairLaw& law, double theta) 
   Opening op;
   op.theta = theta;
   op.inv_theta = theta > 0.0 ? 1.0 / theta : 0.0;
-  op.kernel = law.kind == Softening::Kernel;
+  op.kernel = kernel_softened(law.kind);
   op.support = op.kernel ? law.kernel->support() : 0.0;
   return op;
 }
@@ -126,7 +126,7 @@ std::vector<CellUse> BarnesHutTree::interactions(const Sources& s, const PairLaw
   double allowed = 1e300;
   if (theta > 0.0 && tol > 0.0) {  // the estimate pass for this target alone, as evaluate() does
     double a[3] = {0, 0, 0}, phi = 0.0;
-    const double e2 = law.kind == Softening::Kernel ? 0.0 : law.eps2;
+    const double e2 = kernel_softened(law.kind) ? 0.0 : law.eps2;
     visit(
         t, opening(law, kEstimateTheta), 1e300, stack,
         [&](std::uint32_t, const TreeNode& nd, double dx, double dy, double dz) {

@@ -38,6 +38,7 @@ KernelSoftening::KernelSoftening(KernelType type) {
   F_.resize(kIntervals + 1);
   Psi_.resize(kIntervals + 1);
   M_.resize(kIntervals + 1);
+  Z_.resize(kIntervals + 1);
   const double w0 = (4.0 / 3.0) * std::numbers::pi * K.W(0.0, 1.0) / total;  // lim M/q^3 at q = 0
   for (std::size_t k = 0; k <= kIntervals; ++k) {
     const std::size_t kf = k * kFine;
@@ -46,6 +47,7 @@ KernelSoftening::KernelSoftening(KernelType type) {
     F_[k] = k == 0 ? w0 : M[kf] / (q * q * q);
     Psi_[k] = Psi[kf];
     dPsi_[k] = k == 0 ? 0.0 : -M[kf] / (q * q);
+    Z_[k] = k == 0 ? Psi[0] : k == kIntervals ? 0.0 : Psi[kf] - M[kf] / q;
   }
 }
 

@@ -4,8 +4,8 @@
 //    denominator (|x| + eps^2)^3 is a misprint for (|x|^2 + eps^2)^(3/2));
 //  - kernel: each mass spread like the SPH kernel of its h (Price & Monaghan 2007, MNRAS 374, 1347),
 //    f = M(r/h)/r^3 with M the kernel mass inside r, exactly Newtonian beyond the support; symmetrised
-//    as the mean of the laws of h_i and h_j, so the pair force is antisymmetric. The grad-h correction
-//    term of their eq. 28 is left out: energy is conserved to the accuracy with which h varies slowly.
+//    as the mean of the laws of h_i and h_j, so the pair force is antisymmetric. Its grad-h term (their
+//    zeta term, which needs dphi/dh below) is the stage physics/gravity_grad_h.cpp.
 #pragma once
 #include <cmath>
 #include <vector>
@@ -40,6 +40,17 @@ class KernelSoftening {
                        (-2 * s3 + 3 * s2) * Psi_[k + 1] + (s3 - s2) * dq_ * dPsi_[k + 1];
     phi = -psi * hinv;
   }
+  /// dphi/dh [1/length^2] of one particle of smoothing length h at distance r: with phi = -Psi(q)/h,
+  /// dphi/dh = (Psi(q) - M(q)/q) / h^2, zero beyond the support (Price & Monaghan 2007, eq. 27).
+  double dphi_dh(double r, double h) const {
+    const double q = r / h;
+    if (q >= support_) return 0.0;
+    const double t = q * inv_dq_;
+    const std::size_t k = static_cast<std::size_t>(t);
+    const double s = t - static_cast<double>(k);
+    const double hinv = 1.0 / h;
+    return (Z_[k] + s * (Z_[k + 1] - Z_[k])) * hinv * hinv;
+  }
   /// The enclosed kernel mass fraction M(q) (for tests).
   double enclosed(double q) const;
 
@@ -49,6 +60,7 @@ class KernelSoftening {
   std::vector<double> Psi_;  ///< -phi h: 1/q beyond the support
   std::vector<double> dPsi_;  ///< dPsi/dq = -M/q^2
   std::vector<double> M_;    ///< M(q)
+  std::vector<double> Z_;    ///< Psi(q) - M(q)/q = h^2 dphi/dh: 0 at the support
 };
 
 /// The pair law of a run (see the file comment).

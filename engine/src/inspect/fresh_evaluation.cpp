@@ -35,7 +35,7 @@ StageContext fresh_context(const FreshInputs& in, FreshEvaluation& e) {
 
 FreshEvaluation evaluate_fresh(const FreshInputs& in, const Particles& state, std::size_t i) {
   FreshEvaluation e;
-  e.pipeline = std::make_unique<Pipeline>(in.prm.physics, state.dim());
+  e.pipeline = std::make_unique<Pipeline>(in.prm, state.dim());
   e.p = state;
   e.p.resize_total(state.size());  // drop the old ghosts: prepare() makes the copy's own
   FieldSet start_shared = FieldSet{}.add(Field::Mass).add(Field::H);

@@ -54,7 +54,7 @@ const Owner kPlummer{"Plummer-softened self-gravity", Slot::Gravity, [](const Pa
 const Owner kKernel{"the SPH kernel (SPH stages or kernel-softened gravity)", Slot::Density, [](const Params& p) {
                       const Physics& ph = p.physics;
                       return ph.density != DensityMode::None || ph.force != ForceType::None || ph.xsph == Toggle::On ||
-                             (ph.gravity != GravityType::None && p.gravity.softening == Softening::Kernel);
+                             (ph.gravity != GravityType::None && kernel_softened(p.gravity.softening));
                     }};
 const Owner kFpm{"the finite pointset method", Slot::Fpm, [](const Params& p) { return p.physics.fpm != FpmType::None; }};
 const Owner kFpmViscous{"the viscous Burgers scheme", Slot::Fpm,

@@ -138,10 +138,10 @@ void add_gravity(std::vector<ParamInfo>& t) {
                    [](Params& p) -> double& { return p.gravity.G; }, 0.0, 1e12));
   t.push_back(choice<Softening>({"gravity.softening", "choice",
                                  "short-range softening: Plummer (seed 003 eq. 2.43) or the SPH kernel of each particle's "
-                                 "h (Price & Monaghan 2007)",
+                                 "h with its grad-h term (Price & Monaghan 2007), or without it (energy leaks as h changes)",
                                  "", kGravity, true},
                                 [](Params& p) -> Softening& { return p.gravity.softening; },
-                                {Softening::Plummer, Softening::Kernel}));
+                                {Softening::Plummer, Softening::Kernel, Softening::KernelNoGradH}));
   t.push_back(real({"gravity.eps", "length", "Plummer softening length eps (seed 003 eq. 2.43); 0 = point masses",
                     "eps", kPlummer, true},
                    [](Params& p) -> double& { return p.gravity.eps; }, 0.0, 1e12));

@@ -19,7 +19,8 @@ constexpr std::pair<const char*, IntegratorType> kIntegrators[] = {
     {"euler", IntegratorType::Euler}, {"rk4", IntegratorType::RK4},
     {"leapfrog", IntegratorType::Leapfrog}, {"predictor_corrector", IntegratorType::PredictorCorrector}};
 
-constexpr std::pair<const char*, Softening> kSoftenings[] = {{"plummer", Softening::Plummer}, {"kernel", Softening::Kernel}};
+constexpr std::pair<const char*, Softening> kSoftenings[] = {
+    {"plummer", Softening::Plummer}, {"kernel", Softening::Kernel}, {"kernel_no_grad_h", Softening::KernelNoGradH}};
 constexpr std::pair<const char*, PointControl> kControls[] = {{"none", PointControl::None},
                                                              {"reinterpolate", PointControl::Reinterpolate},
                                                              {"merge_split", PointControl::MergeSplit}};

@@ -93,7 +93,7 @@ class SelfGravity final : public Stage {
     gravity::PairLaw law;
     law.kind = g.softening;
     law.eps2 = g.eps * g.eps;
-    if (g.softening == Softening::Kernel) {
+    if (kernel_softened(g.softening)) {
       if (!kernel_ || kernel_type_ != c.prm.kernel.type) {
         kernel_.emplace(c.prm.kernel.type);
         kernel_type_ = c.prm.kernel.type;

@@ -19,7 +19,7 @@ std::vector<TreeCell> Report::tree_cells(std::size_t k) const {
   law.kind = prm.gravity.softening;
   law.eps2 = prm.gravity.eps * prm.gravity.eps;
   std::optional<gravity::KernelSoftening> kernel;
-  if (law.kind == Softening::Kernel) law.kernel = &kernel.emplace(prm.kernel.type);
+  if (kernel_softened(law.kind)) law.kernel = &kernel.emplace(prm.kernel.type);
   gravity::BarnesHutTree tree;
   tree.build(s);
   for (const gravity::CellUse& u : tree.interactions(s, law, prm.gravity.theta, prm.gravity.tol, i)) {

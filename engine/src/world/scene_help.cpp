@@ -43,7 +43,7 @@ std::string scene_help(const RunConfig& cfg) {
            " [" + accepts + "]\n      " + std::string(slot.description) + "\n";
   }
   std::string order;
-  const Pipeline pipeline(cfg.params.physics, s.dim);
+  const Pipeline pipeline(cfg.params, s.dim);
   for (const auto& st : pipeline.stages())
     order += (order.empty() ? "" : " -> ") + std::string(st->name());
   out += "  each step runs: " + (order.empty() ? std::string("(no stage)") : order) + "\n\n";

@@ -11,6 +11,7 @@
 #include "core/parallel.h"
 #include "core/pipeline.h"
 #include "core/stage.h"
+#include "core/stages.h"
 #include "core/team_size.h"
 
 namespace sph {
@@ -33,7 +34,7 @@ World::World(const RunConfig& cfg)
     : cfg_(cfg), kernel_(cfg.params.kernel.type, cfg.scene->dim), stats_(std::make_unique<EvalStats>()),
       team_(std::make_unique<TeamChooser>()) {
   check_physics(*cfg_.scene, cfg_.params.physics);
-  pipeline_ = std::make_unique<Pipeline>(cfg_.params.physics, cfg_.scene->dim);
+  pipeline_ = std::make_unique<Pipeline>(cfg_.params, cfg_.scene->dim);
   SceneSetup setup = cfg_.scene->build(cfg_.params, cfg_.values);
   p_ = std::move(setup.particles);
   p_.partition_by_kind();
@@ -82,9 +83,9 @@ World::~World() = default;
 
 void World::set_params(const Params& p) {
   const Params old = cfg_.params;
-  if (p.physics != old.physics) {
+  if (p.physics != old.physics || gravity_grad_h(p) != gravity_grad_h(old)) {
     check_physics(*cfg_.scene, p.physics);  // throws before anything changes
-    pipeline_ = std::make_unique<Pipeline>(p.physics, p_.dim());
+    pipeline_ = std::make_unique<Pipeline>(p, p_.dim());
     p_.add_fields(pipeline_->fields());
     start_shared_ = FieldSet{}.add(Field::Mass).add(Field::H);
     for (const EvolvedPair& e : pipeline_->evolved()) start_shared_.add(e.first);
