@@ -24,6 +24,9 @@ class Reference;
 
 class RunChecks {
  public:
+  /// The most point masses whose every pair the checks look at (the few bodies of the N-body scenes):
+  /// their energy every step, their orbits' pericentres at the start.
+  static constexpr std::size_t kFewBodies = 64;
   /// What the run has tolerated so far (empty for a clean run), in the order first found.
   const std::vector<RunWarning>& warnings() const { return warnings_; }
 

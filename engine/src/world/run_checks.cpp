@@ -133,7 +133,7 @@ void RunChecks::check_energy(const RunConfig& cfg, const std::function<Diagnosti
   // steps and at each output (`now`).
   const double bound = cfg.scene->energy_bound;
   const GravityType gravity = cfg.params.physics.gravity;
-  const bool few_bodies = gravity == GravityType::Direct && p.fluid() <= 64;
+  const bool few_bodies = gravity == GravityType::Direct && p.fluid() <= kFewBodies;
   const bool every_step = bound > 0.0 && (gravity == GravityType::None || few_bodies);
   const bool due = step % 16 == 0 || every_step;
   if (now ? due : !due && energy_scale_ >= 0.0) return;  // `now` after check_step: only what it skipped

@@ -16,14 +16,12 @@
 namespace sph {
 namespace {
 
-constexpr std::size_t kMaxBodies = 64;  // every pair is looked at: the few bodies of the N-body scenes
-
 /// Point masses only: gravity, a fixed dt, an energy bound, no softening, a few bodies all with h = 0.
 bool point_masses_at_fixed_dt(const RunConfig& cfg, const Particles& p) {
   const Params& prm = cfg.params;
   if (prm.physics.gravity == GravityType::None || !(prm.time.dt > 0.0) || !(cfg.scene->energy_bound > 0.0))
     return false;
-  if (prm.gravity.eps > 0.0 || p.fluid() < 2 || p.fluid() > kMaxBodies || !p.has(Field::H)) return false;
+  if (prm.gravity.eps > 0.0 || p.fluid() < 2 || p.fluid() > RunChecks::kFewBodies || !p.has(Field::H)) return false;
   for (std::size_t i = 0; i < p.fluid(); ++i)
     if (p[Field::H][i] != 0.0) return false;
   return true;
