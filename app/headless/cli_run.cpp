@@ -149,7 +149,7 @@ int run_worlds(const RunOptions& opt, const ResumePoint* resume, const RunConfig
 #ifdef SPH_HAVE_FRAMES
   std::optional<RunFrames> frames;
   try {
-    frames.emplace(opt, cfg, world);  // refuses a bad frame flag before anything is written
+    frames.emplace(opt, cfg, world, resume ? &resume->frames : nullptr);  // a bad flag refused before any file
   } catch (const ConfigError& e) {
     std::fprintf(stderr, "sph: %s\n", e.what());
     return kUsage;
@@ -164,7 +164,7 @@ int run_worlds(const RunOptions& opt, const ResumePoint* resume, const RunConfig
   open_files(opt, resume, cfg, world, b, files);
   const double t_end = cfg.params.time.t_end;
 #ifdef SPH_HAVE_FRAMES
-  if (frames->active()) frames->write(world, b, compare);
+  if (frames->active() && !resume) frames->write(world, b, compare);  // a resumed sequence has its first frames
   Progress progress(t_end);
 #endif
   while (world.time() < t_end) {
@@ -182,8 +182,13 @@ int run_worlds(const RunOptions& opt, const ResumePoint* resume, const RunConfig
     }
     progress.update(world.time());
 #endif
-    if (files.ck && (files.ck->due(world.time()) || stop_signal() != 0))
-      files.ck->write(world, *files.out, files.next_out);
+    if (files.ck && (files.ck->due(world.time()) || stop_signal() != 0)) {
+      FrameResume frame_state;
+#ifdef SPH_HAVE_FRAMES
+      frame_state = frames->resume_state();
+#endif
+      files.ck->write(world, *files.out, files.next_out, frame_state);
+    }
     if (stop_signal() != 0) return report_stop(stop_signal(), world, opt, files.ck != nullptr);
   }
 #ifdef SPH_HAVE_FRAMES

@@ -94,6 +94,13 @@ std::unique_ptr<FrameRecorder> FrameRecorder::create(const FrameOptions& o, std:
 
 bool FrameRecorder::frame_due(double t) const { return frames_ == 0 || t >= next_t_; }
 
+void FrameRecorder::continue_from(int frames, double first_t, double next_t, std::vector<sph::ManifestEntry> manifest) {
+  frames_ = frames;
+  first_t_ = first_t;
+  next_t_ = next_t;
+  manifest_.restore(std::move(manifest));
+}
+
 std::string FrameRecorder::frame_path(int index) const {
   char name[32];
   std::snprintf(name, sizeof name, "frame_%05d.png", index);

@@ -75,6 +75,16 @@ class FrameRecorder {
   bool flush(std::string* err);
   int frames_written() const { return frames_; }
   std::string frame_path(int index) const;
+  /// The time of frame 0 and the time from which the next frame is due (for a checkpoint).
+  double first_time() const { return first_t_; }
+  double next_due() const { return next_t_; }
+  /// The frame folder's manifest (its entries: every frame completed, once flush() returned).
+  const sph::OutputManifest& manifest() const { return manifest_; }
+  /// Continues a sequence a checkpoint saved: `frames` frames on disk, frame 0 at first_t, the next
+  /// due from next_t, the folder's manifest as it listed them. The next frame gets number `frames`.
+  void continue_from(int frames, double first_t, double next_t, std::vector<sph::ManifestEntry> manifest);
+  /// Removes the VIDEO.tmp.PID.EXT a run killed while ffmpeg ran left beside the video.
+  void remove_stale_video() const;
 
   /// The ffmpeg command line that turns the frames into options.video (a GIF gets its own palette).
   /// `output` (default: options.video) replaces the file it writes.

@@ -2,7 +2,12 @@
 // complete, and the still of the last frame beside the video.
 #include "frame_recorder.h"
 
+#include <sys/prctl.h>
+#include <sys/wait.h>
 #include <unistd.h>
+
+#include <cerrno>
+#include <csignal>
 
 #include <cstdlib>
 #include <filesystem>
@@ -36,6 +41,25 @@ bool on_path(const char* program) {
   return false;
 }
 
+/// Runs `command` with /bin/sh as std::system does (the wait status, -1 if it cannot start), but as a
+/// process that dies with this thread: a run killed with kill -9 while ffmpeg works leaves no ffmpeg
+/// writing on beside a resumed run. `exec` keeps the death signal from the shell to ffmpeg.
+int run_dying_with_us(const std::string& command) {
+  const std::string line = "exec " + command;
+  const pid_t parent = ::getpid();
+  const pid_t pid = ::fork();
+  if (pid < 0) return -1;
+  if (pid == 0) {  // the child: async-signal-safe calls only
+    if (::prctl(PR_SET_PDEATHSIG, SIGKILL) != 0 || ::getppid() != parent) ::_exit(127);
+    ::execl("/bin/sh", "sh", "-c", line.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR) return -1;
+  return status;
+}
+
 }  // namespace
 
 std::string FrameRecorder::ffmpeg_command(const std::string& output) const {
@@ -57,6 +81,19 @@ std::string FrameRecorder::still_path() const {
   return (p.parent_path() / (p.stem().string() + "_last.png")).string();
 }
 
+void FrameRecorder::remove_stale_video() const {
+  if (options_.video.empty()) return;
+  const std::filesystem::path video(options_.video);  // VIDEO.tmp.PID.EXT, as make_video names it
+  const std::string head = video.stem().string() + ".tmp.", tail = video.extension().string();
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator(video.parent_path().empty() ? "." : video.parent_path(), ec)) {
+    const std::string name = e.path().filename().string();
+    if (name.size() <= head.size() + tail.size() || !name.starts_with(head) || !name.ends_with(tail)) continue;
+    const std::string pid = name.substr(head.size(), name.size() - head.size() - tail.size());
+    if (pid.find_first_not_of("0123456789") == std::string::npos) std::filesystem::remove(e.path(), ec);
+  }
+}
+
 bool FrameRecorder::make_video(std::string* err) {
   if (!flush(err)) return false;
   if (options_.video.empty()) return true;
@@ -73,7 +110,7 @@ bool FrameRecorder::make_video(std::string* err) {
   const std::filesystem::path video(options_.video);
   const std::filesystem::path tmp =
       video.parent_path() / (video.stem().string() + ".tmp." + std::to_string(::getpid()) + video.extension().string());
-  const int status = std::system(ffmpeg_command(tmp.string()).c_str());
+  const int status = run_dying_with_us(ffmpeg_command(tmp.string()));
   std::error_code ec;
   if (status != 0) {
     std::filesystem::remove(tmp, ec);

@@ -13,6 +13,26 @@ namespace sph::cli {
 
 std::string checkpoint_path(const std::string& dir) { return dir + "/checkpoint.sph"; }
 
+namespace {
+
+/// A frame folder or video as the checkpoint keeps it: relative to the --out folder when inside it (sph
+/// resume takes the folder where it is now), else absolute (sph resume may run from another directory).
+std::string kept_path(const std::string& path, const std::string& out) {
+  if (path.empty()) return path;
+  std::error_code ec;
+  const auto p = std::filesystem::absolute(path, ec).lexically_normal();
+  const auto rel = p.lexically_relative(std::filesystem::absolute(out, ec).lexically_normal());
+  return !rel.empty() && *rel.begin() != ".." ? rel.string() : p.string();
+}
+
+/// The path kept_path made, for the --out folder `out`.
+std::string found_path(const std::string& kept, const std::string& out) {
+  if (kept.empty() || std::filesystem::path(kept).is_absolute()) return kept;
+  return (std::filesystem::path(out) / kept).string();
+}
+
+}  // namespace
+
 std::string options_json(const RunOptions& opt) {
   nlohmann::ordered_json j;
   std::error_code ec;  // a scene file by its absolute path: sph resume may run from another directory
@@ -28,6 +48,23 @@ std::string options_json(const RunOptions& opt) {
   j["splash"] = opt.splash;
   j["hdf5"] = opt.hdf5;
   j["checkpoint_every"] = opt.checkpoint_every;
+  if (!opt.frames.empty()) {
+    nlohmann::ordered_json f;
+    f["dir"] = kept_path(opt.frames, opt.out);
+    f["every"] = opt.every;
+    f["size"] = opt.size;
+    f["color_by"] = opt.color_by;
+    f["cmap"] = opt.cmap;
+    f["range"] = opt.range;
+    f["log"] = opt.log_scale;
+    f["profile_axis"] = opt.profile_axis;
+    f["panels"] = opt.panels;
+    f["video"] = kept_path(opt.video, opt.out);
+    f["fps"] = opt.fps;
+    f["gl"] = opt.gl;
+    f["tree_probe"] = opt.tree_probe;
+    j["frames"] = f;
+  }
   return j.dump();
 }
 
@@ -49,6 +86,22 @@ RunOptions options_from_json(const std::string& text, const std::string& path) {
     o.splash = j.at("splash").get<bool>();
     o.hdf5 = j.at("hdf5").get<bool>();
     o.checkpoint_every = j.at("checkpoint_every").get<double>();
+    if (j.contains("frames")) {
+      const auto& f = j.at("frames");
+      o.frames = f.at("dir").get<std::string>();
+      o.every = f.at("every").get<double>();
+      o.size = f.at("size").get<std::string>();
+      o.color_by = f.at("color_by").get<std::string>();
+      o.cmap = f.at("cmap").get<std::string>();
+      o.range = f.at("range").get<std::string>();
+      o.log_scale = f.at("log").get<bool>();
+      o.profile_axis = f.at("profile_axis").get<std::string>();
+      o.panels = f.at("panels").get<std::string>();
+      o.video = f.at("video").get<std::string>();
+      o.fps = f.at("fps").get<int>();
+      o.gl = f.at("gl").get<std::string>();
+      o.tree_probe = f.at("tree_probe").get<long long>();
+    }
     return o;
   } catch (const nlohmann::json::exception& e) {
     throw CheckpointError("checkpoint " + path + ": its run options cannot be read (" + e.what() + ")");
@@ -57,7 +110,21 @@ RunOptions options_from_json(const std::string& text, const std::string& path) {
 
 namespace {
 
-std::string extra_json(const OutputResume& r, int next_out, std::int64_t next_checkpoint, double t_end) {
+nlohmann::ordered_json manifest_json(const std::vector<ManifestEntry>& entries) {
+  nlohmann::ordered_json manifest = nlohmann::ordered_json::array();
+  for (const ManifestEntry& e : entries) manifest.push_back({e.name, e.stamp.bytes, e.stamp.crc32});
+  return manifest;
+}
+
+std::vector<ManifestEntry> manifest_from(const nlohmann::json& a) {
+  std::vector<ManifestEntry> out;
+  for (const auto& e : a)
+    out.push_back({e.at(0).get<std::string>(), FileStamp{e.at(1).get<std::uint64_t>(), e.at(2).get<std::uint32_t>()}});
+  return out;
+}
+
+std::string extra_json(const OutputResume& r, int next_out, std::int64_t next_checkpoint, double t_end,
+                       const FrameResume& frames) {
   nlohmann::ordered_json j;
   j["t_end"] = t_end;
   j["next_out"] = next_out;
@@ -69,9 +136,10 @@ std::string extra_json(const OutputResume& r, int next_out, std::int64_t next_ch
   j["steps"] = r.steps;
   j["diag"] = {r.diag.bytes, r.diag.crc32};
   j["errors"] = {r.errors.bytes, r.errors.crc32};
-  nlohmann::ordered_json manifest = nlohmann::ordered_json::array();
-  for (const ManifestEntry& e : r.manifest) manifest.push_back({e.name, e.stamp.bytes, e.stamp.crc32});
-  j["manifest"] = manifest;
+  j["manifest"] = manifest_json(r.manifest);
+  if (frames.active)  // doubles round-trip exactly through the JSON text
+    j["frames"] = {{"next_frame", frames.next_frame}, {"written", frames.written}, {"first_t", frames.first_t},
+                   {"next_t", frames.next_t}, {"manifest", manifest_json(frames.manifest)}};
   return j.dump();
 }
 
@@ -89,8 +157,16 @@ void read_extra(const std::string& text, ResumePoint& rp) {
     };
     rp.output.diag = stamp(j.at("diag"));
     rp.output.errors = stamp(j.at("errors"));
-    for (const auto& e : j.at("manifest"))
-      rp.output.manifest.push_back({e.at(0).get<std::string>(), stamp(nlohmann::json{e.at(1), e.at(2)})});
+    rp.output.manifest = manifest_from(j.at("manifest"));
+    if (j.contains("frames")) {
+      const auto& f = j.at("frames");
+      rp.frames.active = true;
+      rp.frames.next_frame = f.at("next_frame").get<int>();
+      rp.frames.written = f.at("written").get<int>();
+      rp.frames.first_t = f.at("first_t").get<double>();
+      rp.frames.next_t = f.at("next_t").get<double>();
+      rp.frames.manifest = manifest_from(f.at("manifest"));
+    }
   } catch (const nlohmann::json::exception& e) {
     throw CheckpointError("checkpoint " + rp.path + ": its output state cannot be read (" + e.what() + ")");
   }
@@ -110,6 +186,21 @@ void check_output(const std::string& dir, const std::string& name, std::uint64_t
                           std::to_string(size) + " of " + std::to_string(bytes) + " bytes)");
 }
 
+/// Every frame the checkpoint counts must be on disk as it was written (its size).
+void check_frames(const RunOptions& opt, const FrameResume& f, const std::string& ck) {
+  if (f.active != !opt.frames.empty())
+    throw CheckpointError("checkpoint " + ck + ": its run options and its frame state disagree");
+  for (const ManifestEntry& e : f.manifest) {
+    const std::string path = opt.frames + "/" + e.name;
+    std::error_code ec;
+    const auto size = std::filesystem::file_size(path, ec);
+    if (ec) throw CheckpointError("checkpoint " + ck + ": the frame it continues, " + path + ", is missing");
+    if (size != e.stamp.bytes)
+      throw CheckpointError("checkpoint " + ck + ": " + path + " is not the frame it wrote (" + std::to_string(size) +
+                            " bytes, not " + std::to_string(e.stamp.bytes) + ")");
+  }
+}
+
 }  // namespace
 
 ResumePoint load_resume_point(const std::string& dir, RunOptions* opt) {
@@ -120,10 +211,13 @@ ResumePoint load_resume_point(const std::string& dir, RunOptions* opt) {
     throw CheckpointError("sph resume " + dir + ": no such directory (give the --out DIR of the run)");
   rp.ck = read_checkpoint(rp.path);
   *opt = options_from_json(rp.ck.run_options, rp.path);
-  opt->out = dir;  // the directory may have moved since
+  opt->out = dir;  // the directory may have moved since, and the frames inside it with it
+  opt->frames = found_path(opt->frames, dir);
+  opt->video = found_path(opt->video, dir);
   read_extra(rp.ck.extra, rp);
   check_output(dir, "diagnostics.csv", rp.output.diag.bytes, rp.path);
   check_output(dir, "errors.csv", rp.output.errors.bytes, rp.path);
+  check_frames(*opt, rp.frames, rp.path);
   return rp;
 }
 
@@ -139,14 +233,14 @@ bool Checkpointer::due(double t) const {
   return every_ > 0.0 && t >= static_cast<double>(next_) * every_ * (1.0 - 1e-12);
 }
 
-void Checkpointer::write(const World& world, RunOutput& out, int next_out) {
+void Checkpointer::write(const World& world, RunOutput& out, int next_out, const FrameResume& frames) {
   if (every_ > 0.0)
     while (due(world.time())) ++next_;
   Checkpoint ck;
   ck.config_json = config_;
   ck.run_options = options_;
   ck.world = world.save_state();
-  ck.extra = extra_json(out.resume_state(), next_out, next_, world.config().params.time.t_end);
+  ck.extra = extra_json(out.resume_state(), next_out, next_, world.config().params.time.t_end, frames);
   const std::string err = write_checkpoint(path_, ck);
   if (!err.empty()) throw IoError(err);
 }
@@ -159,7 +253,6 @@ std::string checkpoint_unsupported(const RunOptions& opt) {
   if (opt.out.empty()) return "--checkpoint-every needs --out DIR (the checkpoint goes beside the CSVs)";
   if (!opt.compare.scene.empty() || !opt.compare.sets.empty())
     return "--checkpoint-every does not cover --compare runs";
-  if (!opt.frames.empty() || !opt.video.empty()) return "--checkpoint-every does not cover --frames or --video";
   return "";
 }
 

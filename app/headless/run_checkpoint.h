@@ -1,9 +1,10 @@
 // Checkpoints of `sph run --out DIR`: DIR/checkpoint.sph (sph/checkpoint.h) with the run's options and
-// where its output files stood, written every --checkpoint-every of simulated time and when a signal
-// stops the run; `sph resume DIR` (cli_resume.cpp) continues from it.
+// where its output files and frames stood, written every --checkpoint-every of simulated time and when a
+// signal stops the run; `sph resume DIR` (cli_resume.cpp) continues from it.
 #pragma once
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "cli_run.h"
 #include "run_output.h"
@@ -11,6 +12,16 @@
 #include "sph/world.h"
 
 namespace sph::cli {
+
+/// Where a frame sequence (--frames, --video) stood at a checkpoint: every frame so far on disk, when the
+/// next ones fall due, and the frame folder's manifest. The video is made from the frames at the end.
+struct FrameResume {
+  bool active = false;
+  int next_frame = 1;                   ///< the run loop's next frame is due at next_frame * --every
+  int written = 0;                      ///< frame_00000.png ... frame_{written - 1}.png are complete
+  double first_t = 0.0, next_t = 0.0;   ///< the time of frame 0 and the recorder's next due time
+  std::vector<ManifestEntry> manifest;  ///< the frame folder's manifest.json entries
+};
 
 /// A checkpoint read back and checked, with the caller's part decoded.
 struct ResumePoint {
@@ -20,6 +31,7 @@ struct ResumePoint {
   int next_out = 1;                  ///< the run loop's next particle output
   std::int64_t next_checkpoint = 1;  ///< the next checkpoint is at next_checkpoint * checkpoint_every
   double t_end = 0.0;                ///< the end time of the run that wrote it (sph resume --until may change it)
+  FrameResume frames;                ///< the frame sequence (inactive without --frames)
 };
 
 /// DIR/checkpoint.sph.
@@ -31,7 +43,7 @@ RunOptions options_from_json(const std::string& text, const std::string& path);
 /// Reads and checks DIR/checkpoint.sph and the output files it continues; fills `opt` with the run's
 /// options (--out DIR). Throws CheckpointError naming the file; nothing is changed on disk.
 ResumePoint load_resume_point(const std::string& dir, RunOptions* opt);
-/// Why `opt` cannot take checkpoints ("" if it can): they need --out, and cover neither --compare nor frames.
+/// Why `opt` cannot take checkpoints ("" if it can): they need --out, and do not cover --compare.
 std::string checkpoint_unsupported(const RunOptions& opt);
 /// The run stopped on signal `sig` after a step: prints where and how to continue; returns 130 or 143.
 int report_stop(int sig, const World& world, const RunOptions& opt, bool checkpointed);
@@ -45,8 +57,9 @@ class Checkpointer {
   Checkpointer& operator=(const Checkpointer&) = delete;
   /// A periodic checkpoint is due at time t (the run passed the next multiple of --checkpoint-every).
   bool due(double t) const;
-  /// Writes DIR/checkpoint.sph whole (temp name, fsync, rename); throws IoError.
-  void write(const World& world, RunOutput& out, int next_out);
+  /// Writes DIR/checkpoint.sph whole (temp name, fsync, rename), with the frame sequence's state (every
+  /// frame it counts already on disk); throws IoError.
+  void write(const World& world, RunOutput& out, int next_out, const FrameResume& frames);
   const std::string& path() const { return path_; }
 
  private:

@@ -100,10 +100,19 @@ std::string check_fields(const RunOptions& opt, const RunConfig& cfg, const Snap
 
 }  // namespace
 
-RunFrames::RunFrames(const RunOptions& opt, const RunConfig& cfg, const World& world) : opt_(opt) {
+RunFrames::RunFrames(const RunOptions& opt, const RunConfig& cfg, const World& world, const FrameResume* resume)
+    : opt_(opt) {
   RunOptions fopt = opt;  // with the colour-by field resolved
   if (!opt.frames.empty()) fopt.color_by = check_fields(opt, cfg, world.report().snapshot());
   rec_ = make_recorder(fopt);  // validates the frame flags before anything is written
+  if (rec_) {  // this run owns the frame folder: what a killed run was writing there goes
+    remove_stale_temporaries(opt.frames);  // frame_NNNNN.png.tmp.PID, manifest.json.tmp.PID
+    rec_->remove_stale_video();
+  }
+  if (rec_ && resume && resume->active) {
+    rec_->continue_from(resume->written, resume->first_t, resume->next_t, resume->manifest);
+    next_frame_ = resume->next_frame;
+  }
   if (rec_ && rec_->view().profile_axis >= 0 && !render::draws_profile(cfg.scene->dim, rec_->view().profile_axis))
     std::fprintf(stderr, "sph: note: %s applies to 2D scenes; %s is %dD, so it is ignored\n", flag::kProfileAxis,
                  cfg.scene->name.c_str(), cfg.scene->dim);
@@ -129,6 +138,19 @@ void RunFrames::write(const World& world, const World* b, const std::optional<Co
     scene.errors_b = reference_errors(*b);
   }
   if (!rec_->write_frame(scene, &err_)) throw IoError(err_);
+}
+
+FrameResume RunFrames::resume_state() {
+  FrameResume r;
+  if (!rec_) return r;
+  if (!rec_->flush(&err_)) throw IoError(err_);  // the checkpoint counts only frames on disk
+  r.active = true;
+  r.next_frame = next_frame_;
+  r.written = rec_->frames_written();
+  r.first_t = rec_->first_time();
+  r.next_t = rec_->next_due();
+  r.manifest = rec_->manifest().entries();
+  return r;
 }
 
 int RunFrames::finish() {

@@ -9,6 +9,7 @@
 #include "cli_compare.h"
 #include "cli_run.h"
 #include "frame_recorder.h"
+#include "run_checkpoint.h"
 #include "sph/snapshot.h"
 
 namespace sph::cli {
@@ -16,14 +17,18 @@ namespace sph::cli {
 class RunFrames {
  public:
   /// Checks the frame flags against world's fields and opens the recorder (none without --frames):
-  /// ConfigError names a bad flag, IoError a frame folder that cannot be made.
-  RunFrames(const RunOptions& opt, const RunConfig& cfg, const World& world);
+  /// ConfigError names a bad flag, IoError a frame folder that cannot be made. With `resume` (an active
+  /// FrameResume of sph resume) the sequence goes on after the frames it counts.
+  RunFrames(const RunOptions& opt, const RunConfig& cfg, const World& world, const FrameResume* resume = nullptr);
 
   bool active() const { return rec_ != nullptr; }
   /// The simulated time at which the next frame is due.
   double next_time() const { return next_frame_ * opt_.every; }
   /// Counts the next frame as passed (the world stepped beyond its time).
   void advance() { ++next_frame_; }
+  /// Where the sequence stands, for a checkpoint: waits until every frame so far is on disk (IoError when
+  /// one cannot be written). Inactive without --frames.
+  FrameResume resume_state();
   /// Writes the frame of world now (with run B, compared); IoError when it cannot be written.
   void write(const World& world, const World* b, const std::optional<CompareSetup>& compare);
   /// Waits for the PNG files, prints where they are and makes the video (--video): kOk, or kIoError

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Checkpoint and restart of `sph run` (README "Checkpoints"): a resumed run is bitwise the run that never
 # stopped, in every output file; signals stop a run with a checkpoint; a run killed at random moments
-# resumes to the same files; damaged checkpoints are refused with exit 3 naming the file.
-# usage: restart_test.sh matrix|signals|kill|damaged PATH_TO_SPH
+# resumes to the same files, its frames and video too; damaged checkpoints are refused with exit 3 naming
+# the file.
+# usage: restart_test.sh matrix|signals|kill|frames|damaged PATH_TO_SPH
 set -u
 mode=$1; sph=$2
 source "$(dirname "$0")/test_lib.sh"
@@ -13,9 +14,11 @@ same() {
   local f rc=0
   for f in "$1"/*; do
     case $(basename "$f") in checkpoint.sph) continue ;; esac
+    [ -d "$f" ] && continue  # a folder (frames) is compared by itself
     cmp -s "$f" "$2/$(basename "$f")" || { echo "  differs: $(basename "$f")"; rc=1; }
   done
-  [ "$(ls "$1" | grep -vc '^checkpoint.sph$')" = "$(ls "$2" | grep -vc '^checkpoint.sph$')" ] || { echo "  file lists differ"; rc=1; }
+  [ "$(ls "$1" | grep -vc '^checkpoint.sph$')" = "$(ls "$2" | grep -vc '^checkpoint.sph$')" ] ||
+    { echo "  file lists differ; only in $2: $(comm -13 <(ls "$1") <(ls "$2") | grep -v '^checkpoint.sph$' | tr '\n' ' ')"; rc=1; }
   return $rc
 }
 
@@ -24,6 +27,7 @@ complete() {
   local f
   [ -z "$(ls "$1" | grep -E '\.tmp(\.[0-9]+)?$|\.part$')" ] || { echo "  temporary files left: $(ls "$1" | grep -E '\.tmp(\.[0-9]+)?$|\.part$')"; return 1; }
   for f in "$1"/*.csv; do
+    [ -e "$f" ] || continue  # a frame folder has none
     [ "$(tail -c 1 "$f" | od -An -c | tr -d ' ')" = '\n' ] || { echo "  $f does not end with a newline"; return 1; }
     awk -F, 'NR == 1 { n = NF } NF != n { bad = 1 } END { exit bad }' "$f" || { echo "  $f: a row of another width"; return 1; }
   done
@@ -95,20 +99,32 @@ signals)
     ok "second SIGINT: resumed files identical" same "$work/whole" "$d"
   fi
   ;;
-kill)
-  # kill -9 at 20 moments drawn from a seeded generator; resume each from its last checkpoint (with the
-  # ParaView, SPLASH and HDF5 files too). Odd runs wait for their first checkpoint before the random delay
-  # (halved), so at least 10 kills test a resume however loaded the machine is; even runs may die before it.
-  run=(run sod --set scene.n_left=400 --until 0.2 --threads 1 --quiet --checkpoint-every 0.01 --vtu --splash --hdf5)
+kill | frames)
+  # kill -9 at 20 moments drawn from a seeded generator; resume each from its last checkpoint. kill: with
+  # the ParaView, SPLASH and HDF5 files too; frames: a PNG sequence and its GIF (--frames, --video) in a
+  # folder of the run's. Odd runs wait for their first checkpoint before the random delay (halved), so at least 10
+  # kills test a resume however loaded the machine is; even runs may die before it.
+  if [ "$mode" = kill ]; then
+    run=(run sod --set scene.n_left=400 --until 0.2 --threads 1 --quiet --checkpoint-every 0.01 --vtu --splash --hdf5)
+    places() { echo "--out $1"; }
+    folders=(.)
+  else
+    command -v ffmpeg > /dev/null || { echo "ffmpeg is not installed (apt-get install ffmpeg): skipped"; exit 77; }
+    run=(run box_random --until 1.2 --threads 1 --quiet --checkpoint-every 0.15 --every 0.1 --size 160x120)
+    places() { echo "--out $1 --frames $1/frames --video $1/frames/v.gif"; }  # frames inside the run folder
+    folders=(. frames)
+  fi
+  # identical DIR: every folder of the run in DIR holds the uninterrupted run's files
+  identical() { local f; for f in "${folders[@]}"; do same "$work/whole/$f" "$1/$f" || return 1; done; }
   start=$(date +%s%N)
-  "$sph" "${run[@]}" --out "$work/whole" 2> /dev/null; check "uninterrupted" 0 $?
+  "$sph" "${run[@]}" $(places "$work/whole") 2> /dev/null; check "uninterrupted" 0 $?
   wall_ms=$(( ($(date +%s%N) - start) / 1000000 ))
   RANDOM=11
   resumed=0 killed=0
   for i in $(seq 20); do
     d="$work/k$i"
     delay=$(awk -v r=$RANDOM -v w=$wall_ms 'BEGIN { printf "%.3f", r / 32768 * w / 1000 }')
-    "$sph" "${run[@]}" --out "$d" 2> /dev/null &
+    "$sph" "${run[@]}" $(places "$d") 2> /dev/null &
     pid=$!
     if [ $((i % 2)) -eq 1 ]; then
       for _ in $(seq 1500); do [ -e "$d/checkpoint.sph" ] && break; sleep 0.02; done
@@ -120,14 +136,21 @@ kill)
       "$sph" resume "$d" --quiet 2> /dev/null; check "kill $i (after ${delay}s) resumed" 0 $?
       resumed=$((resumed + 1))
     else  # killed before its first checkpoint: start again
-      "$sph" "${run[@]}" --out "$d" 2> /dev/null; check "kill $i (after ${delay}s) rerun" 0 $?
+      "$sph" "${run[@]}" $(places "$d") 2> /dev/null; check "kill $i (after ${delay}s) rerun" 0 $?
     fi
-    ok "kill $i (after ${delay}s): files identical" same "$work/whole" "$d"
-    ok "kill $i: complete files" complete "$d"
+    ok "kill $i (after ${delay}s): files identical" identical "$d"
+    for f in "${folders[@]}"; do ok "kill $i: complete files in $f" complete "$d/$f"; done
   done
   echo "$killed of 20 runs killed mid-run, $resumed resumed from a checkpoint (the others had none yet); a run takes ${wall_ms} ms"
   ok "most kills landed mid-run" test $killed -ge 12
   ok "most kills resumed from a checkpoint" test $resumed -ge 10
+  if [ "$mode" = frames ]; then  # a frame the checkpoint counts, gone: refused (exit 3) naming it, nothing written
+    cp -r "$work/whole" "$work/lost"
+    rm "$work/lost/frames/frame_00003.png"
+    "$sph" resume "$work/lost" 2> "$work/lost.err"; check "a lost frame: exit 3" 3 $?
+    ok "a lost frame: named" grep -q "frames/frame_00003.png, is missing" "$work/lost.err"
+    ok "a lost frame: nothing written" test ! -e "$work/lost/frames/frame_00003.png"
+  fi
   ;;
 damaged)
   d="$work/good"
