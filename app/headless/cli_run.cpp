@@ -248,6 +248,9 @@ int run_command(const RunOptions& opt, const ResumePoint* resume) {
   } catch (const CheckpointError& e) {
     std::fprintf(stderr, "sph: %s\n", e.what());
     return kInvalidScene;
+  } catch (const ConfigError& e) {  // a scene that cannot place its particles from these values
+    std::fprintf(stderr, "sph: invalid scene: %s: %s\n", cfg.scene ? cfg.scene->name.c_str() : "scene", e.what());
+    return kInvalidScene;
   }
 }
 

@@ -78,6 +78,11 @@ SceneSpec burgers_base(FpmType type) {
   s.reference = [](const Params& prm, const SceneValues& v) {
     return make_burgers_reference(v.at("a"), prm.physics.fpm == FpmType::BurgersViscous ? prm.fpm.eps : 0.0);
   };
+  // e(h) of eq. 22 measured at the defaults: viscous 0.032, upwind 0.010 (the bound: 1.5 x)
+  s.error_bounds = {{"e_seed", type == FpmType::BurgersViscous ? 0.048 : 0.016}};
+  s.assumptions = {{"scene.n / (x_hi - x_lo)", 120.0, 1e300,
+                    "the error bound was measured at 120 points per length or more",
+                    [](const Params&, const SceneValues& v) { return v.at("n") / (v.at("x_hi") - v.at("x_lo")); }}};
   return s;
 }
 

@@ -83,6 +83,17 @@ RunConfig own_scene(const IcFile& f, const std::string& path) {
     auto ref = orig.scene->reference;
     spec->reference = [ref, values](const Params& p, const SceneValues&) { return ref(p, values); };
   }
+  SceneValues values = orig.scene->default_values();  // its reference's assumptions, judged on them too
+  for (const auto& [k, v] : orig.values) values[k] = v;
+  for (RefAssumption& a : spec->assumptions) {
+    if (a.value) {
+      a.value = [f = a.value, values](const Params& p, const SceneValues&) { return f(p, values); };
+    } else if (a.key.starts_with("scene.")) {
+      const auto it = values.find(a.key.substr(6));
+      const double v = it == values.end() ? std::nan("") : it->second;
+      a.value = [v](const Params&, const SceneValues&) { return v; };
+    }
+  }
   auto data = std::make_shared<const IcData>(d);
   spec->build = [data](const Params& p, const SceneValues&) { return place(*data, p, false); };
   return config_of(spec, orig.params);

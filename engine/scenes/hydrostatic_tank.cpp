@@ -30,6 +30,8 @@ SPH_SCENE(110, hydrostatic_tank_scene) {
   s.reference = [](const Params& prm, const SceneValues& v) {
     return make_hydrostatic_reference(v.at("depth"), v.at("width"), v.at("dx"), prm.liquid.rho0, -prm.body.gy);
   };
+  s.error_bounds = {{"L1_p_rel", 0.013}};  // measured to t = 1: 8.5e-3 (the start-up oscillation at t = 0.2)
+  s.assumptions = {resolution("scene.dx", 1e-4, 0.025), weakly_compressible("depth", 1.0)};
   return s;
 }
 

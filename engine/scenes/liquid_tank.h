@@ -2,6 +2,7 @@
 // SI units. The inner surface of a wall is where its first layer of wall particles lies, half a
 // spacing outside the fluid lattice: fluid particle centres start dx/2 inside it.
 #pragma once
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,16 @@ Params tank_params(double H, double alpha);
 SceneSpec liquid_scene(std::string name, std::string description, std::vector<std::string> walls);
 
 /// Lennard-Jones strength of seed 001 §7.2: D = 5 g H.
+/// The reference guard of a weakly compressible liquid of height H = factor x scene value `key`: the
+/// references are incompressible, which the liquid follows while c0 >= 10 sqrt(2 g H) (the defaults).
+inline RefAssumption weakly_compressible(std::string key, double factor) {
+  return {"c0 / sqrt(2 g H)", 10.0 * (1.0 - 1e-9), 1e300,
+          "the reference is incompressible: c0 >= 10 times the fall speed sqrt(2 g H) keeps density changes near 1%",
+          [key, factor](const Params& p, const SceneValues& v) {
+            return p.liquid.c0 / std::sqrt(2.0 * std::abs(p.body.gy) * factor * v.at(key));
+          }};
+}
+
 inline double lj_strength(double g, double H) { return 5.0 * g * H; }
 
 /// g [m/s^2] of the tank scenes (tank_params' body force, the wall strength).

@@ -53,6 +53,11 @@ SceneSpec planet_scene(std::string name, std::string description) {
   return s;
 }
 
+/// The two-body references are point masses': no softening.
+RefAssumption point_masses() {
+  return {"gravity.eps", 0.0, 0.0, "the exact two-body motion is that of point masses (no softening)", {}};
+}
+
 }  // namespace
 
 SPH_SCENE(120, two_body_fall_scene) {
@@ -65,6 +70,8 @@ SPH_SCENE(120, two_body_fall_scene) {
   s.defaults.time.cfl = 0.01;                        // dt = 0.01 of the pair's dynamical time sqrt(r^3/mu)
   set_run_times(s.defaults, 0.175, 0.025);           // the encounter is at t = 0.1768 yr (r = 0.08 AU at 0.175)
   s.energy_bound = 1e-6;  // measured to t = 0.175: 5.8e-8 (RK4; the error grows towards the encounter)
+  s.error_bounds = {{"err_r", 5e-9}};  // measured to t = 0.175: 3.4e-10
+  s.assumptions = {point_masses()};
   s.build = [](const Params& prm, const SceneValues& v) { return bodies_setup(prm, 2, fall_bodies(v), 1.2 * v.at("r0")); };
   s.reference = [](const Params& prm, const SceneValues& v) { return make_fall_reference(fall_bodies(v), prm.gravity.G); };
   return s;
@@ -83,6 +90,9 @@ SPH_SCENE(130, kepler_scene) {
   // measured to t = 10: 1.2e-6 (seed's orbit, e = 0.017); a drift within 3e-5 of the energy scale keeps
   // |dE/E| within 1e-4 at any eccentricity (|E| >= 1/3 of the scale |E_kin| + |E_pot|)
   s.energy_bound = 3e-5;
+  // leapfrog keeps L to round-off (1.6e-14 measured); |dE/E| <= 1e-4 at any eccentricity (3.5e-6 measured)
+  s.error_bounds = {{"dE", 1e-4}, {"dL", 1e-10}};
+  s.assumptions = {point_masses()};
   s.build = [](const Params& prm, const SceneValues& v) { return bodies_setup(prm, 2, kepler_bodies(v), 1.3 * v.at("r0")); };
   s.reference = [](const Params& prm, const SceneValues& v) { return make_kepler_reference(kepler_bodies(v), prm.gravity.G); };
   // the energy error of ten years against the timestep (seed 003 eq. 2.24): sph bench kepler
@@ -97,6 +107,7 @@ SPH_SCENE(140, solar_system_scene) {
   s.defaults.time.dt = 0.001;  // fixed: 240 steps per orbit of Mercury (0.24 yr)
   set_run_times(s.defaults, 100.0, 1.0);
   s.energy_bound = 1e-6;  // measured to t = 100: 2.7e-8
+  s.error_bounds = {{"dE", 1e-6}, {"dL", 1e-10}};  // measured to t = 100: 7.6e-8, 2.0e-14
   s.build = [](const Params& prm, const SceneValues&) { return bodies_setup(prm, 2, solar_bodies(), 42.0); };
   s.reference = [](const Params& prm, const SceneValues&) {
     return make_conservation_reference(solar_bodies(), prm.gravity.G, prm.gravity.eps);

@@ -28,6 +28,10 @@ SPH_SCENE(180, polytrope_scene) {
   d.physics.body_force = BodyForce::Damping;
   d.body.tau = 0.1;
   set_run_times(d, 4.0, 0.2);
+  // once relaxed (t >= 1): the Lane-Emden profile within 2.6%, the virial ratio within 1.4% (measured at
+  // the defaults, to t = 4); another index (gas.gamma) or fewer particles may not get there
+  s.error_bounds = {{"profile_err", 0.035, 1.0}, {"virial_err", 0.02, 1.0}};
+  s.assumptions = {resolution("scene.n", 4000, 1e7)};
   s.allow(Slot::Eos, {"polytropic"});
   s.build = [](const Params& prm, const SceneValues& v) {
     const Polytrope star = star_of(prm);

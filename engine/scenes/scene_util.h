@@ -59,6 +59,12 @@ inline SceneParam seed_param(std::string description) {
 }
 
 /// Sets u from pressure for an ideal gas: u = P / ((gamma - 1) rho).
+/// The reference guard's resolution bound: the scene's error bounds were measured at [lo, hi] of a
+/// resolution value (particles per side, or a spacing); outside, its errors grow by the method's order.
+inline RefAssumption resolution(std::string key, double lo, double hi) {
+  return {std::move(key), lo, hi, "the error bounds were measured at this resolution or finer", {}};
+}
+
 inline double energy_from_pressure(double P, double rho, double gamma) { return P / ((gamma - 1.0) * rho); }
 
 }  // namespace sph::scenes

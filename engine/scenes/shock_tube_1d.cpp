@@ -1,13 +1,16 @@
 // 1D shock tubes with equal-mass particles between mirror walls: Sod (Sod 1978; Toro §4.3.3) and the
 // tube of seed 003 §3.3 (eqs. 3.52–3.61), with the exact Riemann solution as reference.
 #include <cmath>
+#include <cstdio>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "reference/riemann_reference.h"
 #include "scene_registration.h"
 #include "scene_util.h"
 #include "shared_setups.h"
+#include "sph/config.h"
 #include "sph/riemann.h"
 
 namespace sph::scenes {
@@ -45,13 +48,29 @@ double mass_below(double x, const TubeSetup& t) {
   return t.left.rho * (x - t.x_lo) + (t.right.rho - t.left.rho) * S;
 }
 
+std::string text(double x) {
+  char s[32];
+  std::snprintf(s, sizeof s, "%g", x);
+  return s;
+}
+
+/// The most particles a tube may hold: equal masses put n_left rho_r L_r / (rho_l L_l) on the right.
+constexpr double kTubeParticles = 1e7;
+
 TubeSetup tube_from(const SceneValues& v) {
   const auto [left, right] = tube_states(v);
   TubeSetup t{v.at("x_lo"), v.at("x_hi"), v.at("x0"), left, right, static_cast<std::size_t>(v.at("n_left")), 0,
               v.at("smooth")};
+  if (!(t.x_lo < t.x0 && t.x0 < t.x_hi))
+    throw ConfigError("scene.x0 = " + text(t.x0) + " must lie between scene.x_lo = " + text(t.x_lo) +
+                      " and scene.x_hi = " + text(t.x_hi));
   // equal masses: n_right / n_left = (rho_r L_r) / (rho_l L_l), rounded; the right spacing is then
   // m / rho_r exactly and the right wall moves by less than half a spacing (the density stays exact)
   const double ratio = (t.right.rho * (t.x_hi - t.x0)) / (t.left.rho * (t.x0 - t.x_lo));
+  if (!(ratio * static_cast<double>(t.n_left) <= kTubeParticles))
+    throw ConfigError("equal masses would put " + text(ratio * static_cast<double>(t.n_left)) +
+                      " particles right of the diaphragm (n_left rho_r (x_hi - x0) / (rho_l (x0 - x_lo)), at most 1e7): "
+                      "lower scene.n_left, scene.rho_r or scene.x_hi");
   t.n_right = static_cast<std::size_t>(std::llround(ratio * static_cast<double>(t.n_left)));
   if (t.n_right < 1) t.n_right = 1;
   const double m = t.left.rho * (t.x0 - t.x_lo) / static_cast<double>(t.n_left);
@@ -106,6 +125,14 @@ std::vector<SceneParam> tube_params(double x_lo, double x_hi, double x0, const G
   return p;
 }
 
+/// The reference guard of a tube: its L1(rho) bound (measured at the defaults, x 1.5) and what the
+/// Riemann solution assumes: a sharp diaphragm, at least the default resolution.
+void tube_guard(SceneSpec& s, double l1_rho, double n_left) {
+  s.error_bounds = {{"L1_rho", l1_rho}};
+  s.assumptions = {resolution("scene.n_left", n_left, 1e6),
+                   {"scene.smooth", 0.0, 0.0, "the exact solution is that of a sharp diaphragm", {}}};
+}
+
 }  // namespace
 
 SPH_SCENE(10, sod_scene) {
@@ -118,6 +145,7 @@ SPH_SCENE(10, sod_scene) {
   s.energy_bound = 1e-3;
   s.params = tube_params(-0.5, 0.5, 0.0, {1.0, 0.0, 1.0}, {0.125, 0.0, 0.1}, 400);
   s.convergence = {"scene.n_left", {100, 200, 400, 800, 1600}, -1.0, ""};  // as tests/bench/sod_bench
+  tube_guard(s, 4.5e-3, 400);  // L1(rho) measured at t = 0.2: 3.04e-3
   s.build = [s](const Params& p, const SceneValues& v) { return build_tube(s, p, v); };
   s.initial_pressure = [](const Vec3& r, const SceneValues& v) { return state_at(r.x, tube_from(v)).p; };
   // the middle of the left state: far from the diaphragm and (mirror) wall
@@ -136,6 +164,7 @@ SPH_SCENE(20, castellanos_scene) {
   s.name = "shocktube_castellanos";
   s.description = "seed 003 tube: x in [-0.6,0.6], 1280 | 320 equal-mass particles, rho,p = 1,1 | 0.25,0.1795";
   s.params = tube_params(-0.6, 0.6, 0.0, {1.0, 0.0, 1.0}, {0.25, 0.0, 0.1795}, 1280);
+  tube_guard(s, 1.2e-3, 1280);  // L1(rho) measured at t = 0.2: 7.8e-4
   s.defaults.time.integrator = IntegratorType::RK4;  // seed 003 integrates with RK4
   s.defaults.physics.conduction = Toggle::Off;       // seed 003 eqs. 3.58-3.61: viscosity only
   s.build = [s](const Params& p, const SceneValues& v) { return build_tube(s, p, v); };
@@ -146,13 +175,14 @@ namespace {
 
 /// A Riemann problem of the literature on the Sod set-up (M4, conduction, leapfrog, mirror walls).
 SceneSpec riemann_variant(const char* name, const char* description, double x_lo, double x_hi, double x0,
-                          GasState l, GasState r, double n_left, double t_end) {
+                          GasState l, GasState r, double n_left, double t_end, double l1_rho) {
   SceneSpec s = sod_scene();
   s.name = name;
   s.description = description;
   s.params = tube_params(x_lo, x_hi, x0, l, r, n_left);
   set_run_times(s.defaults, t_end, t_end / 4.0);
   s.convergence.values = {100, 200, 400, 800};  // the strong waves cost many steps: 1600 takes 100 s with RK4
+  tube_guard(s, l1_rho, n_left);
   s.build = [s](const Params& p, const SceneValues& v) { return build_tube(s, p, v); };
   return s;
 }
@@ -164,21 +194,22 @@ SceneSpec riemann_variant(const char* name, const char* description, double x_lo
 // Toro's transmissive ends: where a state moves into or away from a wall, that wall launches a wave at
 // t = 0. Each tube is long enough that no wall's wave (nor the fan) reaches the other waves before
 // t_end, so the reference applies to the end (RiemannReference::valid_until; Toro's [0, 1] is widened
-// for tests 1, 2 and 5 and Lax, with the particle spacing kept).
+// for tests 1, 2 and 5 and Lax, with the particle spacing kept). The last number is the bound on L1(rho),
+// 1.5 x its value measured at t_end (Lax 7.9e-3, tests 1-5: 4.2e-3, 0.031, 0.070, 0.069, 0.18).
 SPH_SCENES(30, riemann_variant_scenes) {
   return {
       riemann_variant("lax", "Lax's tube, rho,v,p = 0.445,0.698,3.528 | 0.5,0,0.571, t = 0.14", -1.5, 0.5, 0.0,
-                      {0.445, 0.698, 3.528}, {0.5, 0.0, 0.571}, 600, 0.14),
+                      {0.445, 0.698, 3.528}, {0.5, 0.0, 0.571}, 600, 0.14, 0.012),
       riemann_variant("toro1", "Toro test 1: a modified Sod tube with a sonic rarefaction, 1,0.75,1 | 0.125,0,0.1, t = 0.2",
-                      -0.3, 1.0, 0.3, {1.0, 0.75, 1.0}, {0.125, 0.0, 0.1}, 600, 0.2),
+                      -0.3, 1.0, 0.3, {1.0, 0.75, 1.0}, {0.125, 0.0, 0.1}, 600, 0.2, 6.5e-3),
       riemann_variant("toro2", "Toro test 2, \"123\": two rarefactions and a near vacuum, 1,-2,0.4 | 1,2,0.4, t = 0.15",
-                      -0.1, 1.1, 0.5, {1.0, -2.0, 0.4}, {1.0, 2.0, 0.4}, 240, 0.15),
+                      -0.1, 1.1, 0.5, {1.0, -2.0, 0.4}, {1.0, 2.0, 0.4}, 240, 0.15, 0.045),
       riemann_variant("toro3", "Toro test 3: the left half of the blast wave, p = 1000 | 0.01, t = 0.012", 0.0, 1.0, 0.5,
-                      {1.0, 0.0, 1000.0}, {1.0, 0.0, 0.01}, 200, 0.012),
+                      {1.0, 0.0, 1000.0}, {1.0, 0.0, 0.01}, 200, 0.012, 0.1),
       riemann_variant("toro4", "Toro test 4: the right half of the blast wave, p = 0.01 | 100, t = 0.035", 0.0, 1.0, 0.4,
-                      {1.0, 0.0, 0.01}, {1.0, 0.0, 100.0}, 160, 0.035),
+                      {1.0, 0.0, 0.01}, {1.0, 0.0, 100.0}, 160, 0.035, 0.1),
       riemann_variant("toro5", "Toro test 5: the collision of tests 3 and 4's shocks, t = 0.035", -0.4, 1.7, 0.8,
-                      {5.99924, 19.5975, 460.894}, {5.99242, -6.19633, 46.0950}, 480, 0.035),
+                      {5.99924, 19.5975, 460.894}, {5.99242, -6.19633, 46.0950}, 480, 0.035, 0.28),
   };
 }
 

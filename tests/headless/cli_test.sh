@@ -152,10 +152,15 @@ bad converge_diverged 5 "diverged" converge sod --set time.integrator=euler --se
 
 
 # runs that never go bad silently: a clean run has an empty warnings.csv; a degraded one says so by
-# name (stderr and warnings.csv) and still exits 0; an unstable one stops with exit 5 naming a particle
-ok "clean run: warnings.csv header only" test "$(wc -l < "$work/sod/warnings.csv")" -eq 1
+# name (stderr and warnings.csv) and still exits 0; an unstable one stops with exit 5 naming a particle.
+# The coarse run above (n_left = 100) is outside what the reference's bounds assume, and beyond one.
+"$sph" run sod --out "$work/sod400" > /dev/null 2>&1; check "run sod at its defaults" 0 $?
+ok "clean run: warnings.csv header only" test "$(wc -l < "$work/sod400/warnings.csv")" -eq 1
+ok "coarse run: the assumption named" grep -q '^assumption,.*scene.n_left = 100' "$work/sod/warnings.csv"
+ok "coarse run: the error beyond its bound named" grep -q '^accuracy:L1_rho,.*L1_rho = ' "$work/sod/warnings.csv"
 "$sph" run sod --set time.integrator=euler --out "$work/euler" > /dev/null 2> "$work/euler.err"; check "euler sod" 0 $?
-ok "euler: warnings section" grep -q "^warnings (1):" "$work/euler.err"
+ok "euler: warnings section" grep -q "^warnings (2):" "$work/euler.err"
+ok "euler: the error beyond its bound" grep -q '^accuracy:L1_rho,' "$work/euler/warnings.csv"
 ok "euler: names the integrator" grep -q "forward Euler is unstable" "$work/euler.err"
 ok "euler: warnings.csv row" grep -q '^energy,' "$work/euler/warnings.csv"
 "$sph" run sod --set time.cfl=0.7 --out "$work/cfl7" > /dev/null 2> "$work/cfl7.err"; check "cfl 0.7 sod" 0 $?

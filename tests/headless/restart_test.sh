@@ -29,6 +29,7 @@ complete() {
   for f in "$1"/*.csv; do
     [ -e "$f" ] || continue  # a frame folder has none
     [ "$(tail -c 1 "$f" | od -An -c | tr -d ' ')" = '\n' ] || { echo "  $f does not end with a newline"; return 1; }
+    case $f in */warnings.csv) python3 -c 'import csv, sys; r = list(csv.reader(open(sys.argv[1]))); assert all(len(x) == len(r[0]) for x in r)' "$f" || { echo "  $f: a row of another width"; return 1; }; continue ;; esac  # quoted messages
     awk -F, 'NR == 1 { n = NF } NF != n { bad = 1 } END { exit bad }' "$f" || { echo "  $f: a row of another width"; return 1; }
   done
 }

@@ -14,6 +14,7 @@
 #include "sph/diagnostics.h"
 #include "sph/domain.h"
 #include "sph/diverged.h"
+#include "sph/reference.h"
 #include "sph/run_warning.h"
 
 namespace sph {
@@ -58,6 +59,13 @@ class RunChecks {
                     std::int64_t step, double t, bool now = false);
   /// Warns when the run passes the time its reference applies to.
   void check_reference(const Reference* ref, std::int64_t step, double t);
+  /// At the start and after new parameters: warns (kind "assumption") when a value the scene's reference
+  /// assumes is outside its range (SceneSpec::assumptions), naming the key (run_checks_reference.cpp).
+  void check_assumptions(const RunConfig& cfg);
+  /// At an output: warns (kind "accuracy:COLUMN", from its first crossing) when an error norm of the
+  /// reference, while it applies, is beyond the scene's bound for it (SceneSpec::error_bounds).
+  void check_error_bounds(const RunConfig& cfg, const Reference* ref, const std::vector<RefColumn>& columns,
+                          const std::vector<double>& values, std::int64_t step, double t);
   /// At the start: warns when a fixed time.dt is too large for the pericentre passage of a bound pair of
   /// point masses (h = 0, a few bodies) to keep the scene within its energy bound (run_checks_timestep.cpp).
   void check_pericentres(const RunConfig& cfg, const Particles& p);

@@ -62,6 +62,28 @@ struct ConvergenceDefaults {
   std::string column;  ///< the reference column compared (empty: its primary error)
 };
 
+/// A bound on one of the reference's error norms (a column of errors.csv) that a correct run of the
+/// scene keeps: measured at the defaults, with margin. At each output a value beyond it is warned about
+/// (RunChecks::check_error_bounds), naming the column.
+struct ErrorBound {
+  std::string column;
+  double max = 0.0;   ///< in the column's unit
+  double from = 0.0;  ///< checked from this time on (e.g. the end of a relaxation) [time]
+};
+
+/// What the reference assumes of one value, a scene value ("scene.NAME") or a numeric parameter key:
+/// its comparison means what it says, and the error bounds apply, for lo <= value <= hi. Outside, the
+/// run warns at the start (RunChecks::check_assumptions), naming the key, the range and `why`.
+struct RefAssumption {
+  std::string key;
+  double lo = 0.0, hi = 0.0;
+  std::string why;  ///< e.g. "the Kepler orbit is that of point masses"
+  /// A derived value (e.g. a ratio of scene values), which `key` then names; empty: the key's value.
+  std::function<double(const Params&, const SceneValues&)> value;
+};
+/// "= lo", ">= lo" (hi of 1e300 or more) or "in [lo, hi]", for messages.
+std::string range_text(const RefAssumption& a);
+
 struct SceneSpec {
   std::string name;
   std::string category;     ///< e.g. "gas dynamics / shock tubes"
@@ -88,6 +110,9 @@ struct SceneSpec {
   /// (checked every step; every 16 steps with gravity).
   /// 0: the scene does not conserve energy (walls doing work, damping, physical viscosity...).
   double energy_bound = 0.0;
+  /// The reference's error bounds and its assumptions (the reference guard; README "Warnings").
+  std::vector<ErrorBound> error_bounds;
+  std::vector<RefAssumption> assumptions;
   ConvergenceDefaults convergence;  ///< empty key: scene.n over 60 ... 1920 if the scene has n
   UnitSystem units;                 ///< what the scene's numbers are in (code units unless set)
 

@@ -70,8 +70,12 @@ class World {
   /// The checks after every step: warnings() is what the run has tolerated so far.
   const RunChecks& checks() const { return checks_; }
   /// Before an output is written: a gravity scene's energy checked now as well (RunChecks::check_energy;
-  /// throws DivergedError on a blow-up, so the bad state is not written).
+  /// throws DivergedError on a blow-up, so the bad state is not written), and the reference's error
+  /// norms against the scene's bounds.
   void check_output();
+  /// The reference's error norms now (Report::reference_values) against the scene's bounds
+  /// (RunChecks::check_error_bounds): for a view that has evaluated them already.
+  void check_error_bounds(const std::vector<double>& values);
   /// What the run reports now (diagnostics, reference values, snapshots, the inspector, costs): a view
   /// valid until the world next changes.
   Report report() const;

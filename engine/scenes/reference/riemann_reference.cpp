@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "reference/compared_columns.h"
+#include "sph/config.h"
 
 namespace sph::scenes {
 namespace {
@@ -183,7 +184,12 @@ class RiemannReference final : public Reference {
 
 std::unique_ptr<Reference> make_riemann_reference(GasState left, GasState right, double gamma, double x0, double lo,
                                                   double hi) {
-  return std::make_unique<RiemannReference>(left, right, gamma, x0, lo, hi);
+  try {
+    return std::make_unique<RiemannReference>(left, right, gamma, x0, lo, hi);
+  } catch (const std::invalid_argument& e) {  // states the exact solver does not cover: the scene's values
+    throw ConfigError(std::string("the states scene.rho_l, v_l, p_l | rho_r, v_r, p_r have no exact Riemann solution (") +
+                      e.what() + "): the two rarefactions of v_r - v_l >= 2 (c_l + c_r) / (gamma - 1) leave a vacuum");
+  }
 }
 
 }  // namespace sph::scenes

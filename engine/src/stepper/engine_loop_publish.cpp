@@ -18,6 +18,7 @@ void EngineLoop::publish(int record_index) {
     f.has_reference = world_->report().has_reference();
     f.ref_columns = world_->report().reference_columns();
     f.ref_values = world_->report().reference_values();
+    world_->check_error_bounds(f.ref_values);  // the live view is the GUI's output: its warnings go on the status line
     f.ref_primary = world_->report().reference() ? world_->report().reference()->primary() : -1;
     f.ref_series = world_->report().reference() ? world_->report().reference()->series() : std::vector<std::pair<int, int>>{};
     f.stages = world_->report().stage_names();

@@ -1,15 +1,14 @@
 // RunChecks: the checks after each step that keep a run from going bad silently: non-finite state
 // (stop), a collapsing timestep or a finite blow-up of the energy (stop), particles escaping through
 // walls (stop) or crossing them (warn), energy drift beyond the scene's bound (warn), an h solve that
-// did not converge (warn), and a run past the time its reference applies to (warn). The start check of
-// a fixed timestep against pericentre passages is in run_checks_timestep.cpp.
+// did not converge (warn). The start check of a fixed timestep against pericentre passages is in
+// run_checks_timestep.cpp, the reference guard in run_checks_reference.cpp.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 
 #include "core/parallel.h"
-#include "sph/reference.h"
 #include "sph/run_checks.h"
 
 namespace sph {
@@ -167,18 +166,6 @@ void RunChecks::check_energy(const RunConfig& cfg, const std::function<Diagnosti
                           : "the result is degraded; lower time.cfl");
     warn("energy", -1, what, step, t, true);  // the message keeps the largest drift so far
   }
-}
-
-void RunChecks::check_reference(const Reference* ref, std::int64_t step, double t) {
-  if (!ref) return;
-  const double until = ref->valid_until();
-  if (!(t > until * (1.0 + 1e-12))) return;
-  char what[240];
-  std::snprintf(what, sizeof what,
-                "from t = %.4g waves have reached a boundary: the reference no longer applies (errors.csv marks those "
-                "rows valid = 0)",
-                until);
-  warn("reference", -1, what, step, t);
 }
 
 }  // namespace sph

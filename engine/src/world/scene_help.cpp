@@ -63,6 +63,10 @@ std::string scene_help(const RunConfig& cfg) {
     }
   }
 
+  if (s.energy_bound > 0.0)
+    out += "\nEnergy: E_tot stays within " + number(s.energy_bound) +
+           " of |E_kin| + |E_int| + |E_pot| at the start (beyond, a warning, and exit 8 with gravity; far "
+           "beyond, the run stops)\n";
   out += "\nReference: ";
   std::unique_ptr<Reference> ref = s.reference ? s.reference(cfg.params, cfg.values) : nullptr;
   if (!ref) return out + "none (no exact or measured solution; errors.csv is not written)\n";
@@ -72,6 +76,16 @@ std::string scene_help(const RunConfig& cfg) {
     (c.error ? norms : measured) += "    " + pad(c.name, 16) + c.description + "\n";
   if (!norms.empty()) out += "  error norms (errors.csv, smaller is better):\n" + norms;
   if (!measured.empty()) out += "  measured and exact values (errors.csv):\n" + measured;
+  if (!s.error_bounds.empty()) {
+    out += "  bounds a correct run keeps (measured at the defaults, with margin; beyond one, a warning):\n";
+    for (const ErrorBound& b : s.error_bounds)
+      out += "    " + pad(b.column, 16) + "<= " + number(b.max) + (b.from > 0.0 ? " from t = " + number(b.from) : "") + "\n";
+  }
+  if (!s.assumptions.empty()) {
+    out += "  assumes (outside, a warning at the start):\n";
+    for (const RefAssumption& a : s.assumptions)
+      out += "    " + a.key + " " + range_text(a) + ": " + a.why + "\n";
+  }
   return out;
 }
 

@@ -77,6 +77,7 @@ World::World(const RunConfig& cfg)
   checks_.forget_crossings();  // storage indices changed; a start is placed inside its walls
   RunChecks::check_finite(p_, step_, t_);
   checks_.check_pericentres(cfg_, p_);
+  checks_.check_assumptions(cfg_);
 }
 
 World::~World() = default;
@@ -102,6 +103,7 @@ void World::set_params(const Params& p) {
   // new parameters may change dt and the energies legitimately (e.g. gravity switched on): the blow-up
   // guards measure from the next step on
   checks_.restart_guards();
+  checks_.check_assumptions(cfg_);
 }
 
 void World::set_push(const Push& push) {
@@ -162,8 +164,13 @@ void World::check_step() {
 }
 
 void World::check_output() {
-  if (cfg_.params.physics.gravity == GravityType::None) return;
-  checks_.check_energy(cfg_, [this] { return report().diagnostics(); }, p_, step_, t_, true);
+  if (cfg_.params.physics.gravity != GravityType::None)
+    checks_.check_energy(cfg_, [this] { return report().diagnostics(); }, p_, step_, t_, true);
+  if (reference_ && !cfg_.scene->error_bounds.empty()) check_error_bounds(report().reference_values());
+}
+
+void World::check_error_bounds(const std::vector<double>& values) {
+  checks_.check_error_bounds(cfg_, reference_.get(), ref_columns_, values, step_, t_);
 }
 
 void World::bound() { checks_.tally(apply_boundaries(domain_, p_)); }
