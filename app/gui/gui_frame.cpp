@@ -47,7 +47,8 @@ void handle_recording(GuiState& s, Recorder& rec) {
     } else if (rec.start(s.record_dir, &err)) {
       s.recording = true;
       s.set_record_interval(s.record_every);
-      s.notify("recording into " + s.record_dir + "/");
+      s.notify("recording into " + s.record_dir + "/" +
+               (rec.first() > 0 ? " after its frame_" + std::to_string(rec.first() - 1) + ".png" : std::string()));
     } else {
       s.notify("recording: " + err, true);
     }
@@ -61,9 +62,11 @@ void handle_recording(GuiState& s, Recorder& rec) {
   s.requests.start_recording = s.requests.stop_recording = false;
 }
 
-/// Ctrl+= / Ctrl+- (and the keypad's + and -) step the UI scale, Ctrl+0 resets it.
-void scale_keys(GuiState& s, const std::vector<int>& ctrl_presses) {
+/// Ctrl+= / Ctrl+- (and the keypad's + and -) step the UI scale, Ctrl+0 resets it; Ctrl+S saves the
+/// state to the State panel's file.
+void ctrl_keys(GuiState& s, const std::vector<int>& ctrl_presses) {
   for (int key : ctrl_presses) {
+    if (key == GLFW_KEY_S) s.save_state(s.state_path);
     if (key == GLFW_KEY_EQUAL || key == GLFW_KEY_KP_ADD) s.look.scale = step_ui_scale(s.look.scale, 1);
     if (key == GLFW_KEY_MINUS || key == GLFW_KEY_KP_SUBTRACT) s.look.scale = step_ui_scale(s.look.scale, -1);
     if (key == GLFW_KEY_0 || key == GLFW_KEY_KP_0) s.look.scale = kUiScaleMin;
@@ -91,7 +94,7 @@ const StepperFrame* take_input(MainLoop& l) {
   glfwPollEvents();
   tap_keys_hook(l.o, l.stats.frames(), l.window);
   state.key_presses = l.window.take_key_presses();
-  scale_keys(state, l.window.take_ctrl_presses());
+  ctrl_keys(state, l.window.take_ctrl_presses());
   apply_look(state, &l.applied);
   state.update();
   l.pace.see(state);

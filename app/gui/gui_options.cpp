@@ -93,7 +93,7 @@ int parse_options(int argc, char** argv, GuiOptions* out) {
                  "test hook: F0:F1:X0,Y0:X1,Y1 right-drags (a push) from world point X0,Y0 to X1,Y1 over displayed "
                  "frames F0 to F1 (repeatable)");
   app.add_option("--tap-keys", o.tap_keys,
-                 "test hook: FRAME:KEYS taps each key of KEYS (S, R, ' ' ...; + and - are Ctrl+= and Ctrl+-) at displayed "
+                 "test hook: FRAME:KEYS taps each key of KEYS (S, R, ' ' ...; + and - are Ctrl+= and Ctrl+-, ! Ctrl+S) at displayed "
                  "frame FRAME (repeatable)");
   app.add_option("--lesson", o.lesson, "open this lesson file (assets/lessons/*.json) in the Lesson panel");
   app.add_option("--lesson-step", o.lesson_step, "the lesson's step shown first (1-based)")->check(CLI::PositiveNumber);

@@ -20,6 +20,7 @@ void tap_keys_hook(const GuiOptions& o, long long frame, Window& window) {
     if (std::stoll(t.substr(0, colon)) != frame) continue;
     for (const char ch : t.substr(colon + 1)) {
       if (ch == '+' || ch == '-') window.tap_key(ch == '+' ? GLFW_KEY_EQUAL : GLFW_KEY_MINUS, GLFW_MOD_CONTROL);
+      else if (ch == '!') window.tap_key(GLFW_KEY_S, GLFW_MOD_CONTROL);
       else window.tap_key(ch == ' ' ? GLFW_KEY_SPACE : std::toupper(ch));
     }
   }

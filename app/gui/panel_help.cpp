@@ -21,6 +21,7 @@ constexpr const char* kKeys[][2] = {
     {"F12", "screenshot of the window (PNG in the working directory)"},
     {"Ctrl+=, Ctrl+-", "projector mode: scale every panel's text and widgets (1x-3x)"},
     {"Ctrl+0", "UI scale back to 1x"},
+    {"Ctrl+S", "save the state to the State panel's file (load it with --load-state or Load state)"},
     {"Page Down / Page Up", "next / previous lesson step (Lesson panel)"},
     {"Left / Right (paused)", "scrub back / forward through the last 240 frames (view only)"},
     {"left drag (2D)", "pan the view"},

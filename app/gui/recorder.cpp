@@ -1,9 +1,11 @@
 #include "recorder.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
 #include "png_writer.h"
+#include "sph/atomic_file.h"
 
 namespace sph::gui {
 
@@ -13,6 +15,14 @@ bool Recorder::start(const std::string& dir, std::string* err) {
   if (ec || !std::filesystem::is_directory(dir)) {
     *err = "cannot create directory '" + dir + "'" + (ec ? ": " + ec.message() : std::string());
     return false;
+  }
+  sph::remove_stale_temporaries(dir, "frame_");
+  first_ = 0;  // after the highest frame_NNNNN.png already there
+  for (const auto& e : std::filesystem::directory_iterator(dir, ec)) {
+    const std::string name = e.path().filename().string();
+    int k = -1, end = 0;
+    if (std::sscanf(name.c_str(), "frame_%d.png%n", &k, &end) == 1 && end == static_cast<int>(name.size()) && k >= 0)
+      first_ = std::max(first_, k + 1);
   }
   dir_ = dir;
   frames_ = 0;
@@ -25,7 +35,7 @@ bool Recorder::write(ParticleView& view, const render::FrameScene& scene, const 
   if (!active_) return true;
   if (!view.render_rgba(scene, settings, width, height, &pixels_, err)) return false;
   char name[32];
-  std::snprintf(name, sizeof name, "frame_%05d.png", frames_);
+  std::snprintf(name, sizeof name, "frame_%05d.png", first_ + frames_);
   if (!write_png((std::filesystem::path(dir_) / name).string(), width, height, pixels_, err)) return false;
   ++frames_;
   return true;

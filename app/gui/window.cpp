@@ -78,8 +78,7 @@ Window::~Window() {
 void Window::on_key(GLFWwindow* win, int key, int /*scancode*/, int action, int mods) {
   if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
   Window* w = static_cast<Window*>(glfwGetWindowUserPointer(win));
-  w->presses_.push_back(key);
-  if (mods & GLFW_MOD_CONTROL) w->ctrl_presses_.push_back(key);
+  (mods & GLFW_MOD_CONTROL ? w->ctrl_presses_ : w->presses_).push_back(key);  // Ctrl+S is not S
 }
 
 std::vector<int> Window::take_ctrl_presses() {

@@ -19,18 +19,6 @@ std::string diagnostics_note(const World& world) {
 
 }  // namespace
 
-void remove_stale_temporaries(const std::string& dir) {
-  // NAME.tmp.PID: a whole file a killed run was writing (sph/atomic_file.h); this run owns the folder
-  std::error_code ec;
-  for (const auto& e : std::filesystem::directory_iterator(dir, ec)) {
-    const std::string name = e.path().filename().string();
-    const auto dot = name.rfind(".tmp.");
-    if (dot == std::string::npos || dot + 5 >= name.size()) continue;
-    if (name.find_first_not_of("0123456789", dot + 5) != std::string::npos) continue;
-    std::filesystem::remove(e.path(), ec);
-  }
-}
-
 void write_file(const std::string& path, const std::string& bytes) {
   const std::string err = write_file_atomic(path, bytes);
   if (!err.empty()) throw IoError(err);

@@ -40,8 +40,6 @@ struct OutputResume {
 /// Writes `bytes` to path as a whole file (atomically, sph/atomic_file.h); throws IoError naming it.
 void write_file(const std::string& path, const std::string& bytes);
 
-/// Removes the NAME.tmp.PID files a killed run left in dir (whole files it was writing when it stopped).
-void remove_stale_temporaries(const std::string& dir);
 
 class RunOutput {
  public:

@@ -1,6 +1,7 @@
 // The stepper's save_state / load_state (the GUI's state panel and divergence dialog): a state saved at
 // step N and loaded later brings the World back to step N, and stepping on from it gives bitwise the
-// positions of a headless World stepped the same number of times; a damaged file keeps the run as it is.
+// positions of a headless World stepped the same number of times; a damaged file keeps the run as it is;
+// a state saved at t_end loads stopped there.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -26,6 +27,29 @@ bool wait_for(Stepper& s, const std::function<bool(const StepperFrame&)>& pred) 
     std::this_thread::sleep_for(1ms);
   }
   return false;
+}
+
+TEST(StepperState, AStateSavedAtTheEndLoadsStoppedThere) {
+  // it ran on past t_end (sph-gui --load-state of a state saved at the end recorded frames forever)
+  RunConfig cfg = RunConfig::from_scene("sod");
+  cfg.set("scene.n_left", "60", "test");
+  cfg.params.time.t_end = 0.01;
+  const std::string path =
+      (std::filesystem::temp_directory_path() / ("sph_stepper_end_" + std::to_string(::getpid()) + ".sph")).string();
+  Stepper s(cfg, StepperOptions{});
+  ASSERT_TRUE(wait_for(s, [](const StepperFrame& f) { return f.at_end; }));
+  s.save_state(path);
+  ASSERT_TRUE(wait_for(s, [](const StepperFrame& f) { return !f.notice.empty() || !f.error.empty(); }));
+  ASSERT_EQ(s.latest()->error, "");
+
+  Stepper t(cfg, StepperOptions{});  // running when the state arrives
+  const Checkpoint ck = read_checkpoint(path);
+  t.load_state(path, RunConfig::from_json_text(ck.config_json, path), ck.world);
+  ASSERT_TRUE(wait_for(t, [](const StepperFrame& f) { return f.world_serial == 2 && f.at_end; }));
+  std::this_thread::sleep_for(200ms);  // long enough for hundreds of steps
+  EXPECT_NEAR(t.latest()->snapshot.t, 0.01, 1e-12) << "ran on past t_end";
+  EXPECT_FALSE(t.latest()->running);
+  std::filesystem::remove(path);
 }
 
 TEST(StepperState, SaveAndLoadGiveTheSavedRunBack) {

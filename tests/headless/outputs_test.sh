@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Atomic outputs of `sph run`: manifest.json lists every completed file with its size and CRC-32; a kill
 # leaves only complete files (plus NAME.part / NAME.tmp.PID, never listed); a full disk, a vanished folder
-# or a folder that cannot be made gives exit 4, one message naming the file, and no partial file.
+# or a folder that cannot be made gives exit 4, one message naming the file, and no partial file; the
+# same for the frames of --frames (a full disk, the folder removed mid-run).
 # Runs as root too: chmod cannot stop root, so a full disk is simulated with `ulimit -f` (SIGXFSZ
 # ignored: write(2) then fails with EFBIG) and /dev/full behind a symlink.
 # usage: outputs_test.sh SPH_BINARY
@@ -11,8 +12,8 @@ here=$(cd "$(dirname "$0")" && pwd)
 source "$here/test_lib.sh"
 
 # manifest_ok DIR [lag]: every listed file exists with its listed size and CRC-32, and every particle file
-# is listed (lag: a kill may come between a file's rename and the manifest's update, so the newest one may be
-# missing; it must still be whole: as many lines as the first)
+# is listed (lag: a kill or a full disk may come between a file's rename and the manifest's update, so the
+# newest one may be missing; it must still be whole: as many lines as the first, a PNG's IEND chunk)
 manifest_ok() {
   python3 - "$1" "${2:-}" <<'PY'
 import json, os, sys, zlib
@@ -27,6 +28,8 @@ for n in os.listdir(d):
         if lag and n.endswith(".csv"):
             count = lambda f: sum(1 for _ in open(os.path.join(d, f)))
             assert count(n) == count("particles_00000.csv"), n + " is not whole"
+        elif lag and n.endswith(".png"):  # whole: it ends with the IEND chunk
+            assert open(os.path.join(d, n), "rb").read()[-8:-4] == b"IEND", n + " is not whole"
         else:
             assert n in names, n + " not in the manifest"
 PY
@@ -84,6 +87,26 @@ touch "$work/plain"
 "$sph" run sod --until 0.01 --out "$work/plain/out" --quiet >/dev/null 2>"$work/plain.err"
 check "parent is a file" 4 $?
 ok "parent is a file: message" grep -q "$work/plain/out" "$work/plain.err"
+
+# 7. the disk fills while frames are written (a file size limit the frames' manifest outgrows after about
+# 130 frames): exit 4 naming the file, no partial file, the frames written so far and their manifest intact
+(trap '' XFSZ; ulimit -f 8; exec "$sph" run sod --until 0.2 --frames "$work/ffull" --every 0.001 --size 64x48 \
+  --quiet) >/dev/null 2>"$work/ffull.err"
+check "full disk, frames" 4 $?
+ok "full disk, frames: one message naming the file" test "$(grep -c "cannot write $work/ffull/" "$work/ffull.err")" = 1
+ok "full disk, frames: frames before it" test -e "$work/ffull/frame_00050.png"
+ok "full disk, frames: no temporaries" no_partial "$work/ffull"
+ok "full disk, frames: manifest intact" manifest_ok "$work/ffull" lag  # the last frame may be unlisted
+
+# 8. the frames folder removed mid-run: exit 4 naming a file in it, nothing recreated
+"$sph" run sod --until 0.3 --frames "$work/fgone" --every 0.001 --size 64x48 --quiet >/dev/null 2>"$work/fgone.err" &
+pid=$!
+for _ in $(seq 200); do [ -e "$work/fgone/frame_00002.png" ] && break; sleep 0.05; done
+mv "$work/fgone" "$work/fgone.moved"
+wait $pid
+check "vanished frames folder" 4 $?
+ok "vanished frames folder: message" grep -q "cannot write $work/fgone/" "$work/fgone.err"
+ok "vanished frames folder: not recreated" test ! -e "$work/fgone"
 
 echo "$passes passed, $fails failed"
 [ "$fails" -eq 0 ]

@@ -25,6 +25,10 @@ struct FileStamp {
 /// PATH: REASON"; *stamp (when given) gets the size and CRC-32 of what was written.
 std::string write_file_atomic(const std::filesystem::path& path, std::string_view bytes, FileStamp* stamp = nullptr);
 
+/// Removes the NAME.tmp.PID files a killed writer left in `dir` (whole files it was writing when it
+/// stopped), those of names beginning with `prefix` only when one is given. The caller owns the folder.
+void remove_stale_temporaries(const std::filesystem::path& dir, std::string_view prefix = {});
+
 /// CRC-32 of `bytes` continuing from `crc` (0 to start).
 std::uint32_t crc32_of(std::string_view bytes, std::uint32_t crc = 0);
 

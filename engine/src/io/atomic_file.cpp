@@ -76,6 +76,17 @@ std::uint32_t crc32_of(std::string_view bytes, std::uint32_t crc) {
   return static_cast<std::uint32_t>(c);
 }
 
+void remove_stale_temporaries(const std::filesystem::path& dir, std::string_view prefix) {
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator(dir, ec)) {
+    const std::string name = e.path().filename().string();
+    const auto dot = name.rfind(".tmp.");
+    if (dot == std::string::npos || dot + 5 >= name.size() || !name.starts_with(prefix)) continue;
+    if (name.find_first_not_of("0123456789", dot + 5) != std::string::npos) continue;
+    std::filesystem::remove(e.path(), ec);
+  }
+}
+
 std::string write_file_atomic(const std::filesystem::path& path, std::string_view bytes, FileStamp* stamp) {
   if (stamp) *stamp = {bytes.size(), crc32_of(bytes)};
   if (is_special(path)) {  // /dev/full, /dev/null, a pipe: no temporary beside it

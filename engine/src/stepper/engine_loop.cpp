@@ -190,6 +190,10 @@ void EngineLoop::rebuild(const RunConfig& cfg, const std::string* state, const s
     sample_history();
     if (at_end_) running_ = true;  // the run had only stopped at t_end: run the new World
     diverged_ = at_end_ = false;
+    if (stop_at_end_ && reached(world_->time(), world_->params().time.t_end)) {
+      at_end_ = true;  // a state saved at (or past) t_end: stopped there, not run on past it
+      running_ = false;
+    }
     diverged_particle_ = diverged_step_ = -1;
     meter_.zero();
     anchor_pacing();
