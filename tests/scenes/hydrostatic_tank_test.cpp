@@ -51,3 +51,16 @@ TEST(HydrostaticTank, LennardJonesWallsHoldTheWaterUp) {
 
 }  // namespace
 }  // namespace sph
+
+namespace sph {
+namespace {
+
+TEST(HydrostaticTank, ATankNarrowerThanASpacingIsRefusedNotRunEmpty) {
+  // it ran with walls only and reported L1_p_rel = 0 (an empty mean) and exit 0
+  RunConfig cfg = RunConfig::from_scene("hydrostatic_tank");
+  cfg.set("scene.width", "0.01", "test");
+  EXPECT_THROW(World w(cfg), ConfigError);
+}
+
+}  // namespace
+}  // namespace sph

@@ -38,6 +38,9 @@ World::World(const RunConfig& cfg)
   SceneSetup setup = cfg_.scene->build(cfg_.params, cfg_.values);
   p_ = std::move(setup.particles);
   p_.partition_by_kind();
+  if (p_.fluid() == 0)  // e.g. a tank narrower than a particle spacing: nothing would move or be measured
+    throw ConfigError("the scene's values place no fluid particle (only " + std::to_string(p_.size()) +
+                      " wall particles): widen the fluid or lower its spacing");
   p_.add_fields(pipeline_->fields());
   domain_ = setup.domain;
   spacing_ = setup.spacing;
