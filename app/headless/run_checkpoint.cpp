@@ -1,5 +1,6 @@
 #include "run_checkpoint.h"
 
+#include <limits>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -68,6 +69,26 @@ std::string options_json(const RunOptions& opt) {
   return j.dump();
 }
 
+namespace {
+
+/// A whole number of type T from the checkpoint's JSON: an integer within T's range, else a json
+/// type_error (a double such as 1e110, or -1 for a count, would be undefined behaviour in get<T>()).
+template <class T>
+T whole(const nlohmann::json& v) {
+  if (v.is_number_unsigned()) {
+    const auto u = v.get<std::uint64_t>();
+    if (u <= static_cast<std::uint64_t>(std::numeric_limits<T>::max())) return static_cast<T>(u);
+  } else if (v.is_number_integer()) {
+    const auto i = v.get<std::int64_t>();
+    if (i >= static_cast<std::int64_t>(std::numeric_limits<T>::min()) &&
+        (i < 0 || static_cast<std::uint64_t>(i) <= static_cast<std::uint64_t>(std::numeric_limits<T>::max())))
+      return static_cast<T>(i);
+  }
+  throw nlohmann::json::type_error::create(302, "expected a whole number in range, not " + v.dump(), &v);
+}
+
+}  // namespace
+
 RunOptions options_from_json(const std::string& text, const std::string& path) {
   try {
     const auto j = nlohmann::json::parse(text);
@@ -79,7 +100,7 @@ RunOptions options_from_json(const std::string& text, const std::string& path) {
     o.sets = j.at("set").get<std::vector<std::string>>();
     o.until = j.at("until").get<double>();
     o.out = j.at("out").get<std::string>();
-    o.threads = j.at("threads").get<int>();
+    o.threads = whole<int>(j.at("threads"));
     o.quiet = j.at("quiet").get<bool>();
     o.csv_comments = j.at("csv_comments").get<bool>();
     o.vtu = j.at("vtu").get<bool>();
@@ -98,9 +119,9 @@ RunOptions options_from_json(const std::string& text, const std::string& path) {
       o.profile_axis = f.at("profile_axis").get<std::string>();
       o.panels = f.at("panels").get<std::string>();
       o.video = f.at("video").get<std::string>();
-      o.fps = f.at("fps").get<int>();
+      o.fps = whole<int>(f.at("fps"));
       o.gl = f.at("gl").get<std::string>();
-      o.tree_probe = f.at("tree_probe").get<long long>();
+      o.tree_probe = whole<long long>(f.at("tree_probe"));
     }
     return o;
   } catch (const nlohmann::json::exception& e) {
@@ -119,7 +140,7 @@ nlohmann::ordered_json manifest_json(const std::vector<ManifestEntry>& entries) 
 std::vector<ManifestEntry> manifest_from(const nlohmann::json& a) {
   std::vector<ManifestEntry> out;
   for (const auto& e : a)
-    out.push_back({e.at(0).get<std::string>(), FileStamp{e.at(1).get<std::uint64_t>(), e.at(2).get<std::uint32_t>()}});
+    out.push_back({e.at(0).get<std::string>(), FileStamp{whole<std::uint64_t>(e.at(1)), whole<std::uint32_t>(e.at(2))}});
   return out;
 }
 
@@ -147,13 +168,13 @@ void read_extra(const std::string& text, ResumePoint& rp) {
   try {
     const auto j = nlohmann::json::parse(text);
     rp.t_end = j.at("t_end").get<double>();
-    rp.next_out = j.at("next_out").get<int>();
-    rp.next_checkpoint = j.at("next_checkpoint").get<std::int64_t>();
-    rp.output.files = j.at("files").get<int>();
+    rp.next_out = whole<int>(j.at("next_out"));
+    rp.next_checkpoint = whole<std::int64_t>(j.at("next_checkpoint"));
+    rp.output.files = whole<int>(j.at("files"));
     for (const auto& e : j.at("series")) rp.output.series.push_back({e.at(0).get<double>(), e.at(1).get<std::string>()});
-    rp.output.steps = j.at("steps").get<std::vector<std::int64_t>>();
+    for (const auto& e : j.at("steps")) rp.output.steps.push_back(whole<std::int64_t>(e));
     const auto stamp = [](const nlohmann::json& a) {
-      return FileStamp{a.at(0).get<std::uint64_t>(), a.at(1).get<std::uint32_t>()};
+      return FileStamp{whole<std::uint64_t>(a.at(0)), whole<std::uint32_t>(a.at(1))};
     };
     rp.output.diag = stamp(j.at("diag"));
     rp.output.errors = stamp(j.at("errors"));
@@ -161,8 +182,8 @@ void read_extra(const std::string& text, ResumePoint& rp) {
     if (j.contains("frames")) {
       const auto& f = j.at("frames");
       rp.frames.active = true;
-      rp.frames.next_frame = f.at("next_frame").get<int>();
-      rp.frames.written = f.at("written").get<int>();
+      rp.frames.next_frame = whole<int>(f.at("next_frame"));
+      rp.frames.written = whole<int>(f.at("written"));
       rp.frames.first_t = f.at("first_t").get<double>();
       rp.frames.next_t = f.at("next_t").get<double>();
       rp.frames.manifest = manifest_from(f.at("manifest"));
