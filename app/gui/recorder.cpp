@@ -20,9 +20,10 @@ bool Recorder::start(const std::string& dir, std::string* err) {
   first_ = 0;  // after the highest frame_NNNNN.png already there
   for (const auto& e : std::filesystem::directory_iterator(dir, ec)) {
     const std::string name = e.path().filename().string();
-    int k = -1, end = 0;
-    if (std::sscanf(name.c_str(), "frame_%d.png%n", &k, &end) == 1 && end == static_cast<int>(name.size()) && k >= 0)
-      first_ = std::max(first_, k + 1);
+    if (!name.starts_with("frame_") || !name.ends_with(".png")) continue;
+    const std::string digits = name.substr(6, name.size() - 10);  // frame_NNNNN.png: at most 9 digits
+    if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) continue;
+    first_ = std::max(first_, std::stoi(digits) + 1);
   }
   dir_ = dir;
   frames_ = 0;
