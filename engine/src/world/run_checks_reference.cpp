@@ -14,16 +14,13 @@
 namespace sph {
 namespace {
 
-/// The value of a scene value "scene.NAME" (the scene's default when not set) or of a numeric parameter
-/// key; NaN for a key that is neither.
-double value_of(const RunConfig& cfg, const std::string& key) {
+/// The value of a scene value "scene.NAME" (from `values`: the scene's defaults with the run's values over
+/// them) or of a numeric parameter key; NaN for a key that is neither.
+double value_of(const RunConfig& cfg, const SceneValues& values, const std::string& key) {
   constexpr std::string_view prefix = "scene.";
   if (key.starts_with(prefix)) {
-    const std::string name = key.substr(prefix.size());
-    if (const auto it = cfg.values.find(name); it != cfg.values.end()) return it->second;
-    for (const SceneParam& p : cfg.scene->params)
-      if (p.name == name) return p.value;
-    return std::nan("");
+    const auto it = values.find(key.substr(prefix.size()));
+    return it == values.end() ? std::nan("") : it->second;
   }
   const ParamInfo* info = find_param(key);
   double v = std::nan("");
@@ -46,7 +43,7 @@ void RunChecks::check_assumptions(const RunConfig& cfg) {
   SceneValues values = cfg.scene->default_values();
   for (const auto& [k, v] : cfg.values) values[k] = v;
   for (const RefAssumption& a : cfg.scene->assumptions) {
-    const double v = a.value ? a.value(cfg.params, values) : value_of(cfg, a.key);
+    const double v = a.value ? a.value(cfg.params, values) : value_of(cfg, values, a.key);
     if (v >= a.lo && v <= a.hi) continue;
     char line[400];
     std::snprintf(line, sizeof line, "%s = %.4g, where the reference assumes %s %s: %s", a.key.c_str(), v,
