@@ -8,7 +8,8 @@ namespace sph::gui {
 
 inline std::string unique_path(const std::string& stem, const std::string& ext) {
   std::string path = stem + ext;
-  for (int k = 2; std::filesystem::exists(path); ++k) path = stem + "_" + std::to_string(k) + ext;
+  std::error_code ec;  // the non-throwing form: an unreadable name ends the search, the write reports it
+  for (int k = 2; std::filesystem::exists(path, ec); ++k) path = stem + "_" + std::to_string(k) + ext;
   return path;
 }
 

@@ -82,7 +82,8 @@ RunConfig RunConfig::from_json_text(const std::string& text, const std::string& 
 RunConfig RunConfig::load(const std::string& name_or_file) {
   if (is_hdf5_path(name_or_file)) return load_hdf5_ic(name_or_file);
   const bool looks_like_file = name_or_file.ends_with(".json") || name_or_file.find('/') != std::string::npos;
-  if (looks_like_file || (!find_scene(name_or_file) && std::filesystem::exists(name_or_file)))
+  std::error_code ec;  // a name the system refuses is not a file: from_scene names it as unknown
+  if (looks_like_file || (!find_scene(name_or_file) && std::filesystem::exists(name_or_file, ec)))
     return from_file(name_or_file);
   return from_scene(name_or_file);
 }

@@ -237,7 +237,10 @@ bool is_hdf5_path(const std::string& name) {
 }
 
 IcFile read_hdf5_ic(const std::string& path) {
-  if (!std::filesystem::exists(path)) throw ConfigError(path + ": no such file");
+  // the non-throwing form: a name the system refuses (too long, say) is an input error, not an exception
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec))
+    throw ConfigError(path + (ec ? ": cannot be read (" + ec.message() + ")" : std::string(": no such file")));
   h5::Handle file = h5::open_file(path);
   if (!file.valid()) throw ConfigError(path + ": not an HDF5 file (or it cannot be read)");
   try {

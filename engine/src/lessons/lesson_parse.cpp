@@ -168,8 +168,9 @@ Lesson parse_lesson(const std::string& text, const std::string& origin) {
     st.text = text_of(s, "text", true, origin, p);
     st.scene = text_of(s, "scene", true, origin, p);
     const std::filesystem::path local = folder / st.scene;
+    std::error_code ec;  // a name the system refuses is not a local file
     if (st.scene.find('/') == std::string::npos && st.scene.size() > 5 &&
-        st.scene.compare(st.scene.size() - 5, 5, ".json") == 0 && std::filesystem::exists(local))
+        st.scene.compare(st.scene.size() - 5, 5, ".json") == 0 && std::filesystem::exists(local, ec))
       st.scene = local.string();
     st.sets = sets_of(s, "set", origin, p);
     st.change = text_of(s, "change", false, origin, p);
