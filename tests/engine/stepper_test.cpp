@@ -230,7 +230,11 @@ TEST(Stepper, StressParamsAndCommandsKeepFramesConsistent) {
 }
 
 TEST(Stepper, PauseHoldsAndSingleStepAdvancesOneStep) {
-  Stepper s(small_sod(), options());
+  // t_end far away: on a loaded machine the engine ran Sod's 62 steps to t = 0.2 before the pause
+  // landed, and the single steps queued past t_end stopped there (the next test) instead of counting 3
+  RunConfig cfg = small_sod();
+  cfg.params.time.t_end = 1e3;
+  Stepper s(cfg, options());
   ASSERT_TRUE(wait_for(s, [](const StepperFrame& f) { return f.snapshot.step > 3; }));
   s.pause();
   ASSERT_TRUE(wait_for(s, [](const StepperFrame& f) { return !f.running; }));
@@ -241,6 +245,19 @@ TEST(Stepper, PauseHoldsAndSingleStepAdvancesOneStep) {
   EXPECT_TRUE(wait_for(s, [&](const StepperFrame& f) { return f.snapshot.step == held + 3; }));
   std::this_thread::sleep_for(30ms);
   EXPECT_EQ(s.latest()->snapshot.step, held + 3);
+  EXPECT_FALSE(s.latest()->running);
+}
+
+TEST(Stepper, SingleStepsQueuedPastTheEndStopAtTheEnd) {
+  RunConfig cfg = small_sod();
+  cfg.params.time.t_end = 0.02;
+  Stepper s(cfg, options());
+  s.pause();
+  ASSERT_TRUE(wait_for(s, [](const StepperFrame& f) { return !f.running; }));
+  for (int k = 0; k < 100; ++k) s.step_once();  // more than the steps to t_end
+  ASSERT_TRUE(wait_for(s, [](const StepperFrame& f) { return f.at_end; }));
+  std::this_thread::sleep_for(30ms);
+  EXPECT_NEAR(s.latest()->snapshot.t, 0.02, 1e-12) << "single steps ran on past t_end";
   EXPECT_FALSE(s.latest()->running);
 }
 
