@@ -135,7 +135,7 @@ void gas_scene(SceneSpec& spec, IcData& d, const IcForeignHeader& fh, const std:
   if (fh.adiabatic_index) spec.defaults.gas.gamma = *fh.adiabatic_index;
   spec.allow(Slot::Walls, {"none"});
   spec.allow(Slot::Eos, {"ideal_gas", "isothermal"});
-  if (!fh.periodic) spec.allow(Slot::Gravity, {"none", "direct", "tree"});
+  if (!fh.periodic) spec.allow(Slot::Gravity, {"none", "direct", "tree", "fmm"});
   const Kernel m4(KernelType::M4, d.dim);
   // SmoothingLength: SWIFT's h = H/gamma_K (files with /Units or Dimension), GADGET's h = H; only the
   // start of the Newton-Raphson solve of h here. Absent: eta times the mean spacing.

@@ -9,7 +9,7 @@ void make_nbody(SceneSpec& s, GravityType type, double G) {
   s.defaults.physics.gravity = type;
   s.defaults.gravity.G = G;
   s.defaults.time.integrator = IntegratorType::Leapfrog;
-  s.allow(Slot::Gravity, {"direct", "tree"});
+  s.allow(Slot::Gravity, {"direct", "tree", "fmm"});
 }
 
 SceneSetup bodies_setup(const Params& prm, int dim, const std::vector<Body>& bodies, double half_box) {

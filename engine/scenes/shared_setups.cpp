@@ -47,7 +47,7 @@ SceneSpec gas_sphere_base(std::string name, std::string description) {
   d.visc.beta = 2.0;
   d.time.integrator = IntegratorType::Leapfrog;
   s.allow(Slot::Walls, {"none"});
-  s.allow(Slot::Gravity, {"tree", "direct"});
+  s.allow(Slot::Gravity, {"tree", "direct", "fmm"});
   return s;
 }
 

@@ -16,37 +16,14 @@
 
 #include "gravity/barnes_hut.h"
 #include "gravity/direct_sum.h"
+#include "gravity_bench_util.h"
 #include "gravity_test_util.h"
 
 using namespace sph;
 using namespace sph::gravity;
 
-namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-/// Direct accelerations of the sample targets only.
-std::vector<std::array<double, 3>> direct_at(const Particles& p, const std::vector<std::size_t>& targets, double eps2) {
-  std::vector<std::array<double, 3>> a(targets.size());
-  const auto& m = p[Field::Mass];
-#pragma omp parallel for schedule(dynamic, 8)
-  for (std::size_t t = 0; t < targets.size(); ++t) {
-    const std::size_t i = targets[t];
-    double ax = 0, ay = 0, az = 0;
-    for (std::size_t j = 0; j < p.size(); ++j) {
-      if (j == i) continue;
-      const double dx = p.x[0][i] - p.x[0][j], dy = p.x[1][i] - p.x[1][j], dz = p.x[2][i] - p.x[2][j];
-      const double inv = 1.0 / std::sqrt(dx * dx + dy * dy + dz * dz + eps2), f = m[j] * inv * inv * inv;
-      ax -= f * dx; ay -= f * dy; az -= f * dz;
-    }
-    a[t] = {ax, ay, az};
-  }
-  return a;
-}
-
-}  // namespace
+using bench::direct_at;
+using bench::seconds_since;
 
 int main(int argc, char** argv) {
   std::vector<std::size_t> sizes;

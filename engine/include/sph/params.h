@@ -125,6 +125,9 @@ struct GravityParams {
   double eps = 0.0;      ///< Plummer softening length [length]
   double theta = 0.5;    ///< Barnes-Hut opening angle [dimensionless]: 0 opens every cell (exact)
   double tol = 1e-3;     ///< the tree's relative guard [dimensionless]: a cell's dropped octupole <= tol |a_i|; 0 = off
+  double fmm_theta = 0.8;  ///< FMM opening criterion [dimensionless]: cells interact when (r_A + r_B) < theta R
+  double fmm_tol = 1e-3;   ///< FMM relative guard [dimensionless]: a cell pair's error estimate <= tol min|a|; 0 = off
+  int fmm_order = 5;       ///< FMM expansion order [dimensionless]
   Softening softening = Softening::Plummer;
   bool operator==(const GravityParams&) const = default;
 };

@@ -60,6 +60,7 @@ enum class GravityType {
   None,
   Direct,  ///< O(N^2) direct summation, a gather over every other particle in storage order
   Tree,    ///< Barnes-Hut tree, monopole + quadrupole (seed 003 App. A): O(N log N)
+  Fmm,     ///< fast multipole method, cell-cell expansions to order gravity.fmm_order (gravity/fmm.h)
 };
 /// The finite pointset method (seed 002): moving least squares on the particles instead of kernel sums.
 enum class FpmType {

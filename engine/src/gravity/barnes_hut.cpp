@@ -173,14 +173,7 @@ void BarnesHutTree::evaluate(const Sources& s, const PairLaw& law, double G, dou
     walked_.resize(n);
   }
   walk(s, law, theta, guard, walked_);
-  out.pair_terms += walked_.pair_terms;
-  out.node_terms += walked_.node_terms;
-  for (std::size_t t = 0; t < n; ++t) {  // back to storage order
-    const std::uint32_t i = order_[t];
-    for (int k = 0; k < 3; ++k) out.a[k][i] = G * walked_.a[k][t];
-    out.phi[i] = G * walked_.phi[t];
-    out.t2_pair[i] = walked_.t2_pair[t] < 1e299 ? walked_.t2_pair[t] / G : 1e300;
-  }
+  add_from_tree_order(walked_, order_, G, out);
 }
 
 }  // namespace sph::gravity

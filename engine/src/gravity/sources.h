@@ -3,6 +3,7 @@
 #pragma once
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "sph/particles.h"
@@ -28,6 +29,19 @@ struct Result {
   std::size_t pair_terms = 0, node_terms = 0;  ///< interactions evaluated (for benchmarks)
   void resize(std::size_t n);
 };
+
+/// A walk's results per unit G in tree order (`walked`, its terms counted) added into out in storage
+/// order (order[t] = the storage index of tree slot t), times G.
+inline void add_from_tree_order(const Result& walked, const std::vector<std::uint32_t>& order, double G, Result& out) {
+  out.pair_terms += walked.pair_terms;
+  out.node_terms += walked.node_terms;
+  for (std::size_t t = 0; t < order.size(); ++t) {
+    const std::uint32_t i = order[t];
+    for (int k = 0; k < 3; ++k) out.a[k][i] = G * walked.a[k][t];
+    out.phi[i] = G * walked.phi[t];
+    out.t2_pair[i] = walked.t2_pair[t] < 1e299 ? walked.t2_pair[t] / G : 1e300;
+  }
+}
 
 inline void Result::resize(std::size_t n) {
   for (auto& c : a) c.assign(n, 0.0);

@@ -47,6 +47,7 @@ const Owner kBody{"the body-force stage", Slot::BodyForce,
                   [](const Params& p) { return p.physics.body_force == BodyForce::Uniform; }};
 const Owner kGravity{"the self-gravity stage", Slot::Gravity,
                      [](const Params& p) { return p.physics.gravity != GravityType::None; }};
+const Owner kFmm{"the fast multipole method", Slot::Gravity, [](const Params& p) { return p.physics.gravity == GravityType::Fmm; }};
 const Owner kTree{"the Barnes-Hut tree", Slot::Gravity, [](const Params& p) { return p.physics.gravity == GravityType::Tree; }};
 const Owner kPlummer{"Plummer-softened self-gravity", Slot::Gravity, [](const Params& p) {
                        return p.physics.gravity != GravityType::None && p.gravity.softening == Softening::Plummer;

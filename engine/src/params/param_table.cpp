@@ -154,6 +154,20 @@ void add_gravity(std::vector<ParamInfo>& t) {
                     "below tol x |a| of the particle (so the error stays small where |a| is small); 0 = plain theta",
                     "tol", kTree, true},
                    [](Params& p) -> double& { return p.gravity.tol; }, 0.0, 0.1));
+  t.push_back(real({"gravity.fmm_theta", "dimensionless",
+                    "fast multipole opening criterion: cells A and B interact as expansions when (r_A + r_B) < theta x "
+                    "their distance, r the largest distance of a cell's particles from its centre of mass (Dehnen 2002)",
+                    "", kFmm, true},
+                   [](Params& p) -> double& { return p.gravity.fmm_theta; }, 0.05, 0.95));
+  t.push_back(real({"gravity.fmm_tol", "dimensionless",
+                    "fast multipole relative guard: cells interact as expansions only if the estimated error M_A "
+                    "rho^P / (R^2 (1 - rho)^2), rho = (r_A + r_B)/R, is below tol x the smallest |a| of B; 0 = off",
+                    "", kFmm, true},
+                   [](Params& p) -> double& { return p.gravity.fmm_tol; }, 0.0, 0.1));
+  t.push_back(integer({"gravity.fmm_order", "dimensionless",
+                       "fast multipole expansion order P (multipoles and local expansions to order P; 2 = quadrupole)",
+                       "", kFmm, true},
+                      [](Params& p) -> int& { return p.gravity.fmm_order; }, 1, 6));
 }
 
 /// The finite pointset method, the Lennard-Jones walls and the kernel corrections.

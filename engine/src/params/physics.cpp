@@ -38,7 +38,7 @@ const Names<ForceType> kForce{{{"none", ForceType::None}, {"standard", ForceType
 const Names<ViscType> kVisc{{{"none", ViscType::None}, {"monaghan", ViscType::Monaghan}, {"laplacian", ViscType::Laplacian}}};
 const Names<Toggle> kToggle{{{"none", Toggle::Off}, {"on", Toggle::On}}};
 const Names<BodyForce> kBody{{{"none", BodyForce::None}, {"uniform", BodyForce::Uniform}, {"damping", BodyForce::Damping}}};
-const Names<GravityType> kGravity{{{"none", GravityType::None}, {"direct", GravityType::Direct}, {"tree", GravityType::Tree}}};
+const Names<GravityType> kGravity{{{"none", GravityType::None}, {"direct", GravityType::Direct}, {"tree", GravityType::Tree}, {"fmm", GravityType::Fmm}}};
 const Names<WallType> kWalls{{{"none", WallType::None}, {"lennard_jones", WallType::LennardJones}, {"dummy", WallType::Dummy}}};
 
 const Names<FpmType> kFpm{{{"none", FpmType::None}, {"burgers_viscous", FpmType::BurgersViscous},
@@ -100,7 +100,8 @@ const std::array<SlotInfo, kSlotCount>& slot_table() {
       {Slot::BodyForce, "body_force", "external body force: uniform gravity g, or a damping a = -v/tau that relaxes a state",
        kBody.options(), true},
       {Slot::Gravity, "gravity",
-       "self-gravity: direct summation O(N^2) or a Barnes-Hut tree O(N log N) (seed 003 eq. 2.43, App. A)",
+       "self-gravity: direct summation O(N^2), a Barnes-Hut tree O(N log N) (seed 003 eq. 2.43, App. A) or the fast "
+       "multipole method O(N) (Dehnen 2002)",
        kGravity.options(), true},
       {Slot::Walls, "walls",
        "wall particles: Lennard-Jones repulsion (seed 001 eq. 60) or dummy particles with extrapolated pressure "

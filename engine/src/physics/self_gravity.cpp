@@ -1,5 +1,5 @@
 // Self-gravity (seed 003 eqs. 2.3, 2.43; App. A): a += -G sum_j m_j f(r_ij) (x_i - x_j) by direct
-// summation or a Barnes-Hut tree, with Plummer or kernel softening; phi_i is stored for display and the
+// summation, a Barnes-Hut tree or the fast multipole method, with Plummer or kernel softening; phi_i is stored for display and the
 // potential energy E_pot = 1/2 sum m_i phi_i (seed 003 eq. 2.8). It needs no neighbour lists.
 // Timestep limits: sqrt(eps / |a|) for Plummer softening (the world applies sqrt(h/|a|) to h > 0), and
 // the shortest two-body dynamical time sqrt(r^3 / (G (m_i + m_j))) over the pairs summed one by one,
@@ -13,6 +13,7 @@
 #include "core/stages.h"
 #include "gravity/barnes_hut.h"
 #include "gravity/direct_sum.h"
+#include "gravity/fmm.h"
 
 namespace sph {
 namespace {
@@ -20,7 +21,9 @@ namespace {
 class SelfGravity final : public Stage {
  public:
   explicit SelfGravity(GravityType type)
-      : Stage({.name = type == GravityType::Tree ? "self-gravity: Barnes-Hut tree" : "self-gravity: direct summation",
+      : Stage({.name = type == GravityType::Tree  ? "self-gravity: Barnes-Hut tree"
+                       : type == GravityType::Fmm ? "self-gravity: fast multipole method"
+                                                  : "self-gravity: direct summation",
                .needs = {Field::Mass, Field::H},
                .writes = {Field::Potential}}),
         type_(type) {}
@@ -103,6 +106,10 @@ class SelfGravity final : public Stage {
     const gravity::Sources s = gravity::Sources::of(p);
     if (type_ == GravityType::Direct) {
       gravity::direct_sum(s, law, g.G, out);
+    } else if (type_ == GravityType::Fmm) {
+      if (!fmm_ || fmm_->order() != g.fmm_order) fmm_ = std::make_unique<gravity::FastMultipole>(g.fmm_order);
+      fmm_->build(s);
+      fmm_->evaluate(s, law, g.G, g.fmm_theta, out, g.fmm_tol);
     } else {
       tree_.build(s);
       tree_.evaluate(s, law, g.G, g.theta, out, g.tol);
@@ -121,6 +128,7 @@ class SelfGravity final : public Stage {
   // caches of const methods (diagnostics run on the thread that steps)
   mutable gravity::Result scratch_;
   mutable gravity::BarnesHutTree tree_;
+  mutable std::unique_ptr<gravity::FastMultipole> fmm_;
   mutable std::optional<gravity::KernelSoftening> kernel_;
   mutable KernelType kernel_type_ = KernelType::M4;
 };
