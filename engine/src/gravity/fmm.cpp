@@ -13,51 +13,15 @@
 #include <algorithm>
 #include <cmath>
 
+#include "gravity/fmm_walk.h"
+
 namespace sph::gravity {
 namespace {
 
 /// Depth below which subtrees are walked in parallel (at most 8^3 subtrees in 3D).
 constexpr std::size_t kParallelDepth = 3;
 
-/// The Plummer pair sums of sinks 0..cnt-1 from one source particle (a sink `self` is that particle):
-/// one lane per sink, each sink's sum in source order, so the same bits for any vector width.
-void p2p_plummer(std::ptrdiff_t cnt, const double* __restrict x, const double* __restrict y,
-                 const double* __restrict z, double xj, double yj, double zj, double mj, double e2, std::ptrdiff_t self,
-                 double* __restrict ax, double* __restrict ay, double* __restrict az, double* __restrict ph,
-                 double* __restrict re2, double* __restrict mmax) {
-  for (std::ptrdiff_t i = 0; i < cnt; ++i) {
-    const bool me = i == self;
-    const double dx = x[i] - xj, dy = y[i] - yj, dz = z[i] - zj;
-    const double s = me ? 1.0 : dx * dx + dy * dy + dz * dz + e2;
-    const double inv = 1.0 / std::sqrt(s), m = me ? 0.0 : mj, mf = m * inv * inv * inv;
-    ax[i] -= mf * dx;
-    ay[i] -= mf * dy;
-    az[i] -= mf * dz;
-    ph[i] -= m * inv;
-    re2[i] = std::min(re2[i], me ? 1e300 : s);
-    mmax[i] = std::max(mmax[i], m);
-  }
-}
-
 }  // namespace
-
-/// A thread's state: per depth, the cells still to test and those passed on.
-struct FastMultipole::Walk {
-  const PairLaw* law = nullptr;
-  const Criterion* crit = nullptr;
-  double e2 = 0.0;  ///< Plummer eps^2 of the expansions (0 with kernel softening)
-  Result* out = nullptr;
-  /// per depth (sized once: a caller's list must not move while its children are walked); the tree is
-  /// at most 61 levels deep (barnes_hut_build.cpp)
-  std::vector<std::vector<std::uint32_t>> todo = std::vector<std::vector<std::uint32_t>>(64),
-                                          keep = std::vector<std::vector<std::uint32_t>>(64);
-  std::vector<std::uint32_t> far;                  ///< the cells a sink takes as multipoles, in list order
-  std::vector<std::uint32_t> direct;               ///< the cells a sink leaf's particles take one by one
-  std::vector<double> ax, ay, az, phi, re2, mmax;  ///< a leaf's sums
-  Counts counts;
-  /// Subtrees left for the parallel pass: their root and its list.
-  std::vector<std::pair<std::uint32_t, std::vector<std::uint32_t>>>* deferred = nullptr;
-};
 
 void FastMultipole::build(const Sources& s, std::uint32_t leaf_size) {
   tree_.build(s, leaf_size);
@@ -182,61 +146,6 @@ void FastMultipole::far_field(std::uint32_t b, Walk& w) const {
   w.counts.m2l += w.far.size();
 }
 
-void FastMultipole::leaf(std::uint32_t b, const std::vector<std::uint32_t>& near, Walk& w) const {
-  const auto& nodes = tree_.nodes();
-  const TreeNode& nb = nodes[b];
-  const std::size_t first = nb.first, cnt = nb.count;
-  for (auto* v : {&w.ax, &w.ay, &w.az, &w.phi, &w.mmax}) v->assign(cnt, 0.0);
-  w.re2.assign(cnt, 1e300);
-  double *ax = w.ax.data(), *ay = w.ay.data(), *az = w.az.data(), *ph = w.phi.data(), *re2 = w.re2.data(),
-         *mmax = w.mmax.data();
-  const double *x = sx_[0].data() + first, *y = sx_[1].data() + first, *z = sx_[2].data() + first;
-  const PairLaw& law = *w.law;
-  const bool plummer = law.kind == Softening::Plummer;
-  const double e2 = law.eps2;
-  for (const std::uint32_t a : near) {
-    const TreeNode& na = nodes[a];
-    for (std::size_t j = na.first; j < na.first + na.count; ++j) {
-      const double xj = sx_[0][j], yj = sx_[1][j], zj = sx_[2][j], mj = sm_[j], hj = sh_[j];
-      if (plummer) {
-        const std::ptrdiff_t self = j >= first && j < first + cnt ? static_cast<std::ptrdiff_t>(j - first) : -1;
-        p2p_plummer(static_cast<std::ptrdiff_t>(cnt), x, y, z, xj, yj, zj, mj, e2, self, ax, ay, az, ph, re2, mmax);
-      } else {
-        for (std::size_t i = 0; i < cnt; ++i) {
-          if (first + i == j) continue;
-          const double dx = x[i] - xj, dy = y[i] - yj, dz = z[i] - zj, r2 = dx * dx + dy * dy + dz * dz;
-          const double hi = sh_[first + i];
-          double f, p;
-          law(r2, hi, hj, f, p);
-          ax[i] -= mj * f * dx;
-          ay[i] -= mj * f * dy;
-          az[i] -= mj * f * dz;
-          ph[i] += mj * p;
-          re2[i] = std::min(re2[i], r2 + law.soft2(hi, hj));
-          mmax[i] = std::max(mmax[i], mj);
-        }
-      }
-    }
-    w.counts.pairs += na.count * cnt;
-  }
-  for (const std::uint32_t a : w.direct) {
-    const TreeNode& na = nodes[a];
-    for (std::size_t i = 0; i < cnt; ++i)
-      ex_->m2p(M(a), x[i] - na.com[0], y[i] - na.com[1], z[i] - na.com[2], w.e2, ph[i], ax[i], ay[i], az[i]);
-    w.counts.m2l += cnt;
-  }
-  Result& out = *w.out;
-  for (std::size_t i = 0; i < cnt; ++i) {
-    double p = ph[i], gx = ax[i], gy = ay[i], gz = az[i];
-    ex_->l2p(L(b), x[i] - nb.com[0], y[i] - nb.com[1], z[i] - nb.com[2], p, gx, gy, gz);
-    const std::size_t t = first + i;
-    out.a[0][t] = gx;
-    out.a[1][t] = gy;
-    out.a[2][t] = gz;
-    out.phi[t] = p;
-    out.t2_pair[t] = mmax[i] > 0.0 ? re2[i] * std::sqrt(re2[i]) / (sm_[t] + mmax[i]) : 1e300;
-  }
-}
 
 void FastMultipole::walk(const PairLaw& law, const Criterion& c, Result& out) const {
   const auto& nodes = tree_.nodes();
