@@ -1,6 +1,7 @@
 // Self-gravity (seed 003 eqs. 2.3, 2.43; App. A): a += -G sum_j m_j f(r_ij) (x_i - x_j) by direct
-// summation, a Barnes-Hut tree or the fast multipole method, with Plummer or kernel softening; phi_i is stored for display and the
-// potential energy E_pot = 1/2 sum m_i phi_i (seed 003 eq. 2.8). It needs no neighbour lists.
+// summation, a Barnes-Hut tree or the fast multipole method, with Plummer or kernel softening; phi_i
+// is stored for display and the potential energy E_pot = 1/2 sum m_i phi_i (seed 003 eq. 2.8). It
+// needs no neighbour lists.
 // Timestep limits: sqrt(eps / |a|) for Plummer softening (the world applies sqrt(h/|a|) to h > 0), and
 // the shortest two-body dynamical time sqrt(r^3 / (G (m_i + m_j))) over the pairs summed one by one,
 // which resolves close encounters and orbits of point masses (a fraction of it, by the Courant factor).
