@@ -111,6 +111,9 @@ void EngineLoop::apply(const Command& c) {
       break;
     case K::StepOnce:
       running_ = false;
+      // as Resume: at t_end with "stop at t_end" on, a step would leave t_end (steps queued before the end
+      // was reached arrive here after it)
+      if (world_ && at_end_ && stop_at_end_ && reached(world_->time(), world_->params().time.t_end)) break;
       if (world_ && !diverged_) ++single_steps_;
       break;
     case K::SetSceneValue: {
