@@ -68,6 +68,10 @@ class BarnesHutTree {
   void build(const Sources& s, std::uint32_t leaf_size = 8);
   const std::vector<TreeNode>& nodes() const { return nodes_; }
   const std::vector<std::uint32_t>& order() const { return order_; }
+  /// Positions, masses and h in tree order (slot t holds particle order()[t]).
+  const std::array<std::vector<double>, 3>& sorted_x() const { return sx_; }
+  const std::vector<double>& sorted_m() const { return sm_; }
+  const std::vector<double>& sorted_h() const { return sh_; }
   /// Accelerations and potentials of every particle from the tree at opening angle theta, with the
   /// relative guard at tolerance tol (0: none; then one walk).
   void evaluate(const Sources& s, const PairLaw& law, double G, double theta, Result& out,

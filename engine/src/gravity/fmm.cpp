@@ -24,19 +24,7 @@ constexpr std::size_t kParallelDepth = 3;
 }  // namespace
 
 void FastMultipole::build(const Sources& s, std::uint32_t leaf_size) {
-  tree_.build(s, leaf_size);
-  const auto& order = tree_.order();
-  const std::size_t n = s.n;
-  for (int k = 0; k < 3; ++k) {
-    sx_[k].resize(n);
-    for (std::size_t q = 0; q < n; ++q) sx_[k][q] = s.x[k][order[q]];
-  }
-  sm_.resize(n);
-  sh_.resize(n);
-  for (std::size_t q = 0; q < n; ++q) {
-    sm_[q] = s.m[order[q]];
-    sh_[q] = s.h[order[q]];
-  }
+  tree_.build(s, leaf_size);  // it keeps positions, masses and h in tree order: tx(), tm(), th()
   const auto& nodes = tree_.nodes();
   const std::size_t size = ex_->size();
   M_.assign(nodes.size() * size, 0.0);
@@ -45,7 +33,7 @@ void FastMultipole::build(const Sources& s, std::uint32_t leaf_size) {
     double* Mb = &M_[b * size];
     if (nd.n_child == 0) {
       for (std::uint32_t q = nd.first; q < nd.first + nd.count; ++q)
-        ex_->p2m(sm_[q], sx_[0][q] - nd.com[0], sx_[1][q] - nd.com[1], sx_[2][q] - nd.com[2], Mb);
+        ex_->p2m(tm()[q], tx()[0][q] - nd.com[0], tx()[1][q] - nd.com[1], tx()[2][q] - nd.com[2], Mb);
     } else {
       for (std::uint32_t ch = nd.child; ch < nd.child + nd.n_child; ++ch) {
         const TreeNode& c = nodes[ch];

@@ -74,11 +74,13 @@ class FastMultipole {
   void leaf(std::uint32_t b, const std::vector<std::uint32_t>& near, Walk& w) const;
   const double* M(std::uint32_t node) const { return &M_[node * ex_->size()]; }
   double* L(std::uint32_t node) const { return &L_[node * ex_->size()]; }
+  /// positions, masses and h in tree order, kept by the tree
+  const std::array<std::vector<double>, 3>& tx() const { return tree_.sorted_x(); }
+  const std::vector<double>& tm() const { return tree_.sorted_m(); }
+  const std::vector<double>& th() const { return tree_.sorted_h(); }
 
   std::unique_ptr<Expansion> ex_;
   BarnesHutTree tree_;
-  std::array<std::vector<double>, 3> sx_;  ///< positions in tree order
-  std::vector<double> sm_, sh_;            ///< masses and h in tree order
   std::vector<double> M_;                  ///< multipoles, size() per node
   mutable std::vector<double> L_;          ///< local expansions, size() per node
   mutable std::vector<double> amin_;       ///< smallest |a| estimate per node (the guard)

@@ -41,14 +41,14 @@ void FastMultipole::leaf(std::uint32_t b, const std::vector<std::uint32_t>& near
   w.re2.assign(cnt, 1e300);
   double *ax = w.ax.data(), *ay = w.ay.data(), *az = w.az.data(), *ph = w.phi.data(), *re2 = w.re2.data(),
          *mmax = w.mmax.data();
-  const double *x = sx_[0].data() + first, *y = sx_[1].data() + first, *z = sx_[2].data() + first;
+  const double *x = tx()[0].data() + first, *y = tx()[1].data() + first, *z = tx()[2].data() + first;
   const PairLaw& law = *w.law;
   const bool plummer = law.kind == Softening::Plummer;
   const double e2 = law.eps2;
   for (const std::uint32_t a : near) {
     const TreeNode& na = nodes[a];
     for (std::size_t j = na.first; j < na.first + na.count; ++j) {
-      const double xj = sx_[0][j], yj = sx_[1][j], zj = sx_[2][j], mj = sm_[j], hj = sh_[j];
+      const double xj = tx()[0][j], yj = tx()[1][j], zj = tx()[2][j], mj = tm()[j], hj = th()[j];
       if (plummer) {
         const std::ptrdiff_t self = j >= first && j < first + cnt ? static_cast<std::ptrdiff_t>(j - first) : -1;
         p2p_plummer(static_cast<std::ptrdiff_t>(cnt), x, y, z, xj, yj, zj, mj, e2, self, ax, ay, az, ph, re2, mmax);
@@ -56,7 +56,7 @@ void FastMultipole::leaf(std::uint32_t b, const std::vector<std::uint32_t>& near
         for (std::size_t i = 0; i < cnt; ++i) {
           if (first + i == j) continue;
           const double dx = x[i] - xj, dy = y[i] - yj, dz = z[i] - zj, r2 = dx * dx + dy * dy + dz * dz;
-          const double hi = sh_[first + i];
+          const double hi = th()[first + i];
           double f, p;
           law(r2, hi, hj, f, p);
           ax[i] -= mj * f * dx;
@@ -85,7 +85,7 @@ void FastMultipole::leaf(std::uint32_t b, const std::vector<std::uint32_t>& near
     out.a[1][t] = gy;
     out.a[2][t] = gz;
     out.phi[t] = p;
-    out.t2_pair[t] = mmax[i] > 0.0 ? re2[i] * std::sqrt(re2[i]) / (sm_[t] + mmax[i]) : 1e300;
+    out.t2_pair[t] = mmax[i] > 0.0 ? re2[i] * std::sqrt(re2[i]) / (tm()[t] + mmax[i]) : 1e300;
   }
 }
 
