@@ -117,11 +117,12 @@ void open_files(const RunOptions& opt, const ResumePoint* resume, const RunConfi
 }
 
 /// After a step: the diagnostics rows, and the particles when an output time (or the end) was reached.
-void write_step(RunFiles& files, World& world, World* b, double t_end) {
+/// `current` names the world being checked, for a divergence the check finds.
+void write_step(RunFiles& files, World& world, World* b, double t_end, const World*& current) {
   const bool output = reached(world, files.next_out * files.dt_out) || world.time() >= t_end;
   if (output) {  // a gravity scene's energy checked at each output too (a blow-up is not written)
     world.check_output();
-    if (b) b->check_output();
+    if (b) { current = b; b->check_output(); current = &world; }
   }
   if (files.out) files.out->write_diagnostics(world);
   if (files.out_b) files.out_b->write_diagnostics(*b);
@@ -129,6 +130,19 @@ void write_step(RunFiles& files, World& world, World* b, double t_end) {
     if (files.out) files.out->write_particles(world);
     if (files.out_b) files.out_b->write_particles(*b);
     while (reached(world, files.next_out * files.dt_out)) ++files.next_out;
+  }
+}
+
+/// A run stopped by a divergence: warnings.csv in each output folder beside the files written so far, the
+/// diverged world's ending in a row of kind "diverged" (RunOutput::write_warnings). An I/O error here is
+/// reported and leaves the divergence (exit 5) as the run's outcome.
+void record_divergence(RunFiles& files, const World& world, const World* b, const World& culprit,
+                       const DivergedError& e) {
+  try {
+    if (files.out) files.out->write_warnings(world, &culprit == &world ? &e : nullptr);
+    if (files.out_b) files.out_b->write_warnings(*b, &culprit == b ? &e : nullptr);
+  } catch (const IoError& io) {
+    std::fprintf(stderr, "sph: I/O error: %s\n", io.what());
   }
 }
 
@@ -167,29 +181,35 @@ int run_worlds(const RunOptions& opt, const ResumePoint* resume, const RunConfig
   if (frames->active() && !resume) frames->write(world, b, compare);  // a resumed sequence has its first frames
   Progress progress(t_end);
 #endif
-  while (world.time() < t_end) {
-    double target = std::min(t_end, files.next_out * files.dt_out);
+  const World* current = &world;  // the world a divergence comes from
+  try {
+    while (world.time() < t_end) {
+      double target = std::min(t_end, files.next_out * files.dt_out);
 #ifdef SPH_HAVE_FRAMES
-    if (frames->active()) target = std::min(target, frames->next_time());
+      if (frames->active()) target = std::min(target, frames->next_time());
 #endif
-    world.step(target - world.time());
-    if (b) advance_b(*b, world.time(), *compare);
-    write_step(files, world, b, t_end);
+      world.step(target - world.time());
+      if (b) { current = b; advance_b(*b, world.time(), *compare); current = &world; }
+      write_step(files, world, b, t_end, current);
 #ifdef SPH_HAVE_FRAMES
-    if (frames->active() && reached(world, frames->next_time())) {
-      frames->write(world, b, compare);
-      while (reached(world, frames->next_time())) frames->advance();
+      if (frames->active() && reached(world, frames->next_time())) {
+        frames->write(world, b, compare);
+        while (reached(world, frames->next_time())) frames->advance();
+      }
+      progress.update(world.time());
+#endif
+      if (files.ck && (files.ck->due(world.time()) || stop_signal() != 0)) {
+        FrameResume frame_state;
+#ifdef SPH_HAVE_FRAMES
+        frame_state = frames->resume_state();
+#endif
+        files.ck->write(world, *files.out, files.next_out, frame_state);
+      }
+      if (stop_signal() != 0) return report_stop(stop_signal(), world, opt, files.ck != nullptr);
     }
-    progress.update(world.time());
-#endif
-    if (files.ck && (files.ck->due(world.time()) || stop_signal() != 0)) {
-      FrameResume frame_state;
-#ifdef SPH_HAVE_FRAMES
-      frame_state = frames->resume_state();
-#endif
-      files.ck->write(world, *files.out, files.next_out, frame_state);
-    }
-    if (stop_signal() != 0) return report_stop(stop_signal(), world, opt, files.ck != nullptr);
+  } catch (const DivergedError& e) {
+    record_divergence(files, world, b, *current, e);
+    throw;
   }
 #ifdef SPH_HAVE_FRAMES
   progress.finish();
@@ -238,7 +258,8 @@ int run_command(const RunOptions& opt, const ResumePoint* resume) {
     if (compare) b_ptr = std::make_unique<World>(compare->b);
     return run_worlds(opt, resume, cfg, compare, *world_ptr, b_ptr.get(), t0);
   } catch (const DivergedError& e) {
-    std::fprintf(stderr, "sph: %s; the state was not written\n", e.what());
+    std::fprintf(stderr, "sph: %s; the state was not written%s\n", e.what(),
+                 opt.out.empty() ? "" : " (warnings.csv records the divergence)");
     if (world_ptr) print_warnings(*world_ptr);
     if (b_ptr) print_warnings(*b_ptr);
     return kDiverged;

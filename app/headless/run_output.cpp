@@ -159,14 +159,23 @@ void RunOutput::write_meta(const World& world) {
   put("csv_meta.json", j.dump(2) + "\n");
 }
 
-void RunOutput::write_warnings(const World& world) {
+namespace {
+
+/// One CSV field: quoted, inner quotes doubled.
+std::string csv_quoted(std::string msg) {
+  for (std::size_t k = msg.find('"'); k != std::string::npos; k = msg.find('"', k + 2)) msg.insert(k, 1, '"');
+  return "\"" + msg + "\"";
+}
+
+}  // namespace
+
+void RunOutput::write_warnings(const World& world, const DivergedError* stop) {
   std::ostringstream f;  // written whole at the end of the run (atomically)
   f << "kind,step,t,particle,checks,message\n";
-  for (const RunWarning& w : world.checks().warnings()) {
-    std::string msg = w.message;  // one CSV field: quoted, inner quotes doubled
-    for (std::size_t k = msg.find('"'); k != std::string::npos; k = msg.find('"', k + 2)) msg.insert(k, 1, '"');
-    f << w.kind << "," << w.step << "," << w.t << "," << w.particle << "," << w.times << ",\"" << msg << "\"\n";
-  }
+  for (const RunWarning& w : world.checks().warnings())
+    f << w.kind << "," << w.step << "," << w.t << "," << w.particle << "," << w.times << "," << csv_quoted(w.message)
+      << "\n";
+  if (stop) f << "diverged," << stop->step << "," << stop->t << "," << stop->particle << ",1," << csv_quoted(stop->what()) << "\n";
   put("warnings.csv", f.str());
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "sph/atomic_file.h"
+#include "sph/diverged.h"
 #include "sph/output_manifest.h"
 #include "sph/vtu_writer.h"
 #include "sph/world.h"
@@ -58,8 +59,9 @@ class RunOutput {
   /// The next particles_NNNNN.csv (+ a row of errors.csv), and the formats asked for.
   void write_particles(const World& world);
   /// warnings.csv: what the run tolerated (kind, first step and time, particle id, checks, message); a
-  /// header only for a clean run.
-  void write_warnings(const World& world);
+  /// header only for a clean run. A run stopped by a divergence ends it with a row of kind "diverged"
+  /// (its step, time, particle and message), so its folder records why its files end early.
+  void write_warnings(const World& world, const DivergedError* stop = nullptr);
   /// Renames diagnostics.csv.part and errors.csv.part to their names and lists them in manifest.json;
   /// throws IoError naming the file.
   void finish();

@@ -105,6 +105,9 @@ check "io error" 4 $?
 check "diverged" 5 $?
 ok "diverged message" grep -q "particle [0-9]* has a non-finite .* at step [0-9]*" "$work/div.err"
 ok "no particle file of the diverged state" test ! -e "$work/div/particles_00004.csv"
+ok "diverged: warnings.csv's last row names it" \
+  sh -c "tail -n 1 '$work/div/warnings.csv' | grep -q '^diverged,[0-9]*,[0-9.e-]*,[0-9]*,1,\"simulation diverged: particle [0-9]* has a non-finite'"
+ok "diverged: the message points to warnings.csv" grep -q "warnings.csv records the divergence" "$work/div.err"
 # a timestep far too long for the h solve: exit 5, the message names what failed (no "particle -1")
 "$sph" run sod --set dt=0.01 --out "$work/dt" 2> "$work/dt.err" > /dev/null
 check "dt too long" 5 $?
