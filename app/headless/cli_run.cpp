@@ -133,17 +133,22 @@ void write_step(RunFiles& files, World& world, World* b, double t_end, const Wor
   }
 }
 
-/// A run stopped by a divergence: warnings.csv in each output folder beside the files written so far, the
-/// diverged world's ending in a row of kind "diverged" (RunOutput::write_warnings). An I/O error here is
-/// reported and leaves the divergence (exit 5) as the run's outcome.
-void record_divergence(RunFiles& files, const World& world, const World* b, const World& culprit,
-                       const DivergedError& e) {
+/// A run stopped by a divergence in its loop: the message, the warnings so far, and warnings.csv in each
+/// output folder beside the files written so far, the diverged world's ending in a row of kind "diverged"
+/// (RunOutput::write_warnings); kDiverged. An I/O error here is reported and the exit stays kDiverged.
+int report_divergence(RunFiles& files, const World& world, const World* b, const World& culprit,
+                      const DivergedError& e) {
+  std::fprintf(stderr, "sph: %s; the state was not written%s\n", e.what(),
+               files.out ? " (warnings.csv records the divergence)" : "");
+  print_warnings(world);
+  if (b) print_warnings(*b);
   try {
     if (files.out) files.out->write_warnings(world, &culprit == &world ? &e : nullptr);
     if (files.out_b) files.out_b->write_warnings(*b, &culprit == b ? &e : nullptr);
   } catch (const IoError& io) {
     std::fprintf(stderr, "sph: I/O error: %s\n", io.what());
   }
+  return kDiverged;
 }
 
 /// kInaccurate after a message when a gravity scene's energy drifted beyond its bound (the warning names
@@ -208,8 +213,7 @@ int run_worlds(const RunOptions& opt, const ResumePoint* resume, const RunConfig
       if (stop_signal() != 0) return report_stop(stop_signal(), world, opt, files.ck != nullptr);
     }
   } catch (const DivergedError& e) {
-    record_divergence(files, world, b, *current, e);
-    throw;
+    return report_divergence(files, world, b, *current, e);
   }
 #ifdef SPH_HAVE_FRAMES
   progress.finish();
@@ -258,8 +262,7 @@ int run_command(const RunOptions& opt, const ResumePoint* resume) {
     if (compare) b_ptr = std::make_unique<World>(compare->b);
     return run_worlds(opt, resume, cfg, compare, *world_ptr, b_ptr.get(), t0);
   } catch (const DivergedError& e) {
-    std::fprintf(stderr, "sph: %s; the state was not written%s\n", e.what(),
-                 opt.out.empty() ? "" : " (warnings.csv records the divergence)");
+    std::fprintf(stderr, "sph: %s; the state was not written\n", e.what());  // before the run's files
     if (world_ptr) print_warnings(*world_ptr);
     if (b_ptr) print_warnings(*b_ptr);
     return kDiverged;
