@@ -1,5 +1,5 @@
 // The self-gravitating spheres of seed 003: the pressureless collapse conserves energy and angular
-// momentum; the Evrard collapse (as the scene ships: N = 4096, eps = 0.05, tree at theta = 0.5) reaches
+// momentum; the Evrard collapse (as the scene ships: N = 4096, eps = 0.05, fast multipole method) reaches
 // t = 3 with |dE/E| <= 1e-3 and energy curves of the shape of the seed's Fig. 3.8.
 #include <gtest/gtest.h>
 

@@ -53,7 +53,10 @@ bool FastMultipole::accepts(const Criterion& c, double mass, double rs, double R
   }
   if (c.amin) {  // the expansion's error estimate M_A rho^P / (R^2 (1 - rho)^2), rho = rs / R, within
                  // tol min|a|_B
-    const double rho = std::sqrt(rs * rs / R2), ratio = std::pow(rho, ex_->order()) / ((1.0 - rho) * (1.0 - rho));
+    const double rho = std::sqrt(rs * rs / R2);
+    double rho_p = rho;  // rho^P by products: std::pow took 7% of an evaluation at N = 1e5
+    for (int k = 1; k < c.order; ++k) rho_p *= rho;
+    const double ratio = rho_p / ((1.0 - rho) * (1.0 - rho));
     if (mass * ratio > c.tol * (*c.amin)[node_b] * R2) return false;
   }
   return true;
@@ -175,13 +178,14 @@ void FastMultipole::evaluate(const Sources& s, const PairLaw& law, double G, dou
   const auto& nodes = tree_.nodes();
   if (nodes.empty()) return;
   Criterion c;
+  c.order = ex_->order();
   c.inv_theta = theta > 0.0 ? 1.0 / std::min(theta, 1.0) : 1e300;  // theta = 0: every pair summed
   c.kernel = kernel_softened(law.kind);
   c.support = c.kernel ? law.kernel->support() : 0.0;
   walked_.resize(n);
   if (theta > 0.0 && tol > 0.0) {
     // the estimate walk at theta = 1, no guard: the smallest |a| of each node, bottom up
-    walk(law, c.inv_theta > 1.0 ? Criterion{1.0, c.support, 0.0, c.kernel, nullptr} : c, walked_);
+    walk(law, c.inv_theta > 1.0 ? Criterion{1.0, c.support, 0.0, c.kernel, nullptr, c.order} : c, walked_);
     amin_.assign(nodes.size(), 1e300);
     for (std::size_t b = nodes.size(); b-- > 0;) {
       const TreeNode& nd = nodes[b];

@@ -57,6 +57,7 @@ class FastMultipole {
     double inv_theta = 0.0, support = 0.0, tol = 0.0;
     bool kernel = false;
     const std::vector<double>* amin = nullptr;  ///< smallest |a| of each node (the guard); none: no guard
+    int order = 1;                              ///< the expansion's order P
   };
   /// The opening criterion of a source of mass `mass` and size rs at squared distance R2 (see above).
   bool accepts(const Criterion& c, double mass, double rs, double R2, double hmax, std::uint32_t node_b) const;
