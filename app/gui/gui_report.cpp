@@ -16,6 +16,8 @@ namespace {
 void report_view(const ParticleView& view, const StepperFrame& f) {
   std::string rows;
   for (const std::string& r : view.layout().legend_rows) rows += (rows.empty() ? "" : " | ") + r;
+  if (view.drawn_step() >= 0)
+    std::printf("sph-gui: view drawn from step %lld, t = %.9g\n", view.drawn_step(), view.drawn_time());
   if (!rows.empty()) std::printf("sph-gui: view legend: %s\n", rows.c_str());
   if (!f.inspection) return;
   const Inspection& in = *f.inspection;

@@ -10,8 +10,8 @@
 #include "colormap.h"
 #include "profile_axis.h"
 #include "profile_view.h"
-#include "trails.h"
 #include "panels.h"
+#include "sph/trail_log.h"
 
 namespace sph::gui {
 
@@ -207,7 +207,8 @@ void panel_display(GuiState& s) {
   const SnapshotField* shown = snap.find(v.color_by);
   const bool profile = render::draws_profile(snap.dim, v.profile_axis);
   colour_controls(v, snap, shown, profile);
-  if (render::Trails::applies(snap)) {
+  if (std::any_of(snap.outlines.begin(), snap.outlines.end(),
+                  [](const Outline& o) { return o.label == TrailLog::kLabel; })) {
     ImGui::Checkbox("orbit trails", &v.show_trails);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Each body's path so far (restarts on reset)");
   }

@@ -109,6 +109,8 @@ void ParticleView::draw(const render::FrameScene& scene, std::uint64_t serial, c
     const double cost = std::chrono::duration<double>(drawn_at_ - t0).count();
     render_cost_ = render_cost_ > 0.0 ? 0.8 * render_cost_ + 0.2 * cost : cost;
     drawn_serial_ = serial;
+    drawn_step_ = scene.a ? static_cast<long long>(scene.a->step) : -1;
+    drawn_t_ = scene.a ? scene.a->t : 0.0;
     drawn_view_ = view;
     drawn_highlight_ = scene.highlight;
   }

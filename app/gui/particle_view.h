@@ -37,6 +37,9 @@ class ParticleView {
   /// The off-screen view would be redrawn by draw() (new snapshot, view settings, highlight or size).
   bool stale(std::uint64_t serial, const render::ViewSettings& view, const render::Highlight& highlight,
              const Rect& r) const;
+  /// The view on screen was rendered from the snapshot `serial` (stale() is false for a newer snapshot
+  /// too, until the rate limit allows its redraw).
+  bool shows(std::uint64_t serial) const { return drawn_ && drawn_serial_ == serial; }
   /// Redraws if needed (serial identifies the snapshots) and blits into `r` of a window fb_height tall.
   void draw(const render::FrameScene& scene, std::uint64_t serial, const render::ViewSettings& view, const Rect& r,
             int fb_height);
@@ -48,6 +51,9 @@ class ParticleView {
   /// Where particle `index` of run 0 (A) or 1 (B) is on screen [window px, ImGui's mouse coordinates].
   std::optional<std::array<float, 2>> window_pos_of(int run, std::uint32_t index, const Rect& r) const;
   const render::FrameLayout& layout() const { return renderer_.last_layout(); }
+  /// Step and time of the snapshot the view on screen was rendered from (-1 before any).
+  long long drawn_step() const { return drawn_step_; }
+  double drawn_time() const { return drawn_t_; }
 
  private:
   render::Renderer renderer_;
@@ -56,6 +62,8 @@ class ParticleView {
   double render_cost_ = 0.0; // smoothed wall time of one view render, GL finished [s]
   std::chrono::steady_clock::time_point drawn_at_{};
   std::uint64_t drawn_serial_ = 0;
+  long long drawn_step_ = -1;
+  double drawn_t_ = 0.0;
   render::ViewSettings drawn_view_;
   render::Highlight drawn_highlight_;
   bool drawn_ = false;

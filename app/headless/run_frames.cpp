@@ -123,6 +123,8 @@ RunFrames::RunFrames(const RunOptions& opt, const RunConfig& cfg, const World& w
 
 void RunFrames::write(const World& world, const World* b, const std::optional<CompareSetup>& compare) {
   snap_ = world.report().snapshot();  // with the probed particle's tree walk when asked for
+  trails_.record(world);  // the first frame's start (a no-op when the step already recorded this time)
+  trails_.decorate(snap_);
   if (opt_.tree_probe >= 0) {
     snap_.tree_cells = world.report().tree_cells(static_cast<std::size_t>(opt_.tree_probe));
     snap_.tree_probe = opt_.tree_probe;

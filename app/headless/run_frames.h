@@ -11,6 +11,7 @@
 #include "frame_recorder.h"
 #include "run_checkpoint.h"
 #include "sph/snapshot.h"
+#include "sph/trail_log.h"
 
 namespace sph::cli {
 
@@ -29,6 +30,8 @@ class RunFrames {
   /// Where the sequence stands, for a checkpoint: waits until every frame so far is on disk (IoError when
   /// one cannot be written). Inactive without --frames.
   FrameResume resume_state();
+  /// Samples the orbit trails of a few-body scene (after every step: sph/trail_log.h).
+  void record_trails(const World& world) { trails_.record(world); }
   /// Writes the frame of world now (with run B, compared); IoError when it cannot be written.
   void write(const World& world, const World* b, const std::optional<CompareSetup>& compare);
   /// Waits for the PNG files, prints where they are and makes the video (--video): kOk, or kIoError
@@ -41,6 +44,7 @@ class RunFrames {
   int next_frame_ = 1;
   std::string err_;
   Snapshot snap_, snap_b_;  // what the last frame showed
+  TrailLog trails_;         // run A's orbit trails (a resumed run's start again at the resume)
 };
 
 }  // namespace sph::cli

@@ -1,5 +1,6 @@
 #include "renderer.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "chrome.h"
@@ -15,7 +16,7 @@
 #include "profile_axis.h"
 #include "profile_view.h"
 #include "sph/snapshot.h"
-#include "trails.h"
+#include "sph/trail_log.h"
 
 namespace sph::render {
 
@@ -26,8 +27,7 @@ struct Renderer::Impl {
   OverlayPass overlay;
   FrameBuild frame{font};  // reused between frames (keeps its buffers' capacity)
   sph::SnapshotField log_field;  // the shown field as log10, when the view asks for it
-  Trails trails;                 // orbit trails of the few-body scenes
-  sph::Snapshot decorated;       // a snapshot with its trails added
+  sph::Snapshot untrailed;       // a snapshot without its orbit trails (view.show_trails off)
   bool ready = false;
 };
 
@@ -112,11 +112,11 @@ void Renderer::render(const FrameScene& in, const ViewSettings& view, int width,
   Impl& d = *impl_;
   if (!d.ready || width <= 0 || height <= 0 || in.a == nullptr) return;
   FrameScene scene = in;
-  if (view.show_trails && !scene.b && Trails::applies(*scene.a)) {
-    d.trails.record(*scene.a);
-    d.decorated = *scene.a;
-    d.trails.decorate(d.decorated);
-    scene.a = &d.decorated;
+  const auto trail = [](const sph::Outline& o) { return o.label == sph::TrailLog::kLabel; };
+  if (!view.show_trails && std::any_of(scene.a->outlines.begin(), scene.a->outlines.end(), trail)) {
+    d.untrailed = *scene.a;  // the run's trails (sph::TrailLog) hidden
+    std::erase_if(d.untrailed.outlines, trail);
+    scene.a = &d.untrailed;
   }
   ShownField shown = choose_field(*scene.a, view, &d.log_field);
   if (scene.b && shown.field) shown.range = compare_range(*scene.a, *scene.b, view, *shown.field);

@@ -37,7 +37,7 @@ struct ViewSettings {
   /// default 1, 99 keeps one outlier from squeezing every other particle into one colour.
   float percentile_lo = 0.f, percentile_hi = 100.f;
   float range_min = 0.f, range_max = 1.f;  ///< fixed range [field units] (log10 of them with log_scale)
-  bool show_trails = true;       ///< few-body 2D scenes: draw each particle's path so far (render::Trails)
+  bool show_trails = true;       ///< few-body 2D scenes: draw each particle's path so far (sph::TrailLog)
   bool log_scale = false;        ///< colour (and profile axis) by log10 of the field; values <= 0 are not drawn
 
   Camera2D camera2d;

@@ -70,7 +70,8 @@ class Fall final : public Reference {
 
 class Kepler final : public Reference {
  public:
-  Kepler(const std::vector<Body>& b, double G) : mu_(G * (b[0].m + b[1].m)), I0_(invariants(b, G, 0.0)), G_(G) {
+  Kepler(const std::vector<Body>& b, double G)
+      : mu_(G * (b[0].m + b[1].m)), I0_(invariants(b, G, 0.0)), G_(G), star0_(b[0].x) {
     const Vec3 r = b[1].x - b[0].x, v = b[1].v - b[0].v;
     const double rn = r.norm();
     a_ = 1.0 / (2.0 / rn - v.norm2() / mu_);
@@ -105,6 +106,22 @@ class Kepler final : public Reference {
   }
   int primary() const override { return 3; }
   std::vector<std::pair<int, int>> series() const override { return {{1, 2}}; }
+  /// The exact orbit (an ellipse, 720 segments) about the first body's starting place: where the second
+  /// body's trail should lie while the first barely moves (m_earth << 1).
+  ReferenceCurves curves(const Domain&, double) const override {
+    ReferenceCurves c;
+    if (!(e_ < 1.0)) return c;
+    Outline o;
+    o.label = "Kepler orbit";
+    const double c0 = std::cos(omega_), s0 = std::sin(omega_), b = a_ * std::sqrt(1.0 - e_ * e_);
+    for (int k = 0; k <= 720; ++k) {
+      const double E = 2.0 * kPi * k / 720.0, px = a_ * (std::cos(E) - e_), py = b * std::sin(E);
+      o.x.push_back(static_cast<float>(star0_.x + c0 * px - s0 * py));
+      o.y.push_back(static_cast<float>(star0_.y + s0 * px + c0 * py));
+    }
+    c.outlines.push_back(std::move(o));
+    return c;
+  }
 
   /// Relative position on the orbit at time t: E - e sin E = M0 + n t by Newton's method.
   Vec3 position(double t) const {
@@ -124,6 +141,7 @@ class Kepler final : public Reference {
   double mu_;
   Invariants I0_;
   double G_;
+  Vec3 star0_;
   double a_ = 1.0, e_ = 0.0, omega_ = 0.0, M0_ = 0.0, n_ = 1.0, sign_ = 1.0;
 };
 

@@ -187,6 +187,8 @@ void EngineLoop::rebuild(const RunConfig& cfg, const std::string* state, const s
     cfg_ = world_->config();
     ++world_serial_;
     history_.clear();
+    trails_.clear();
+    trails_.record(*world_);
     error_.clear();
     // run B restarts beside A: from t = 0, or from the same loaded state (B at A's time)
     if (compare_.on() && !compare_.restart(cfg_, &error_, state)) error_ += " (the comparison stopped)";

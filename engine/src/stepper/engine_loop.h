@@ -15,6 +15,7 @@
 #include "inspect_cache.h"
 #include "rate_meter.h"
 #include "sph/stepper.h"
+#include "sph/trail_log.h"
 #include "sph/world.h"
 #include "triple_buffer.h"
 
@@ -73,6 +74,7 @@ class EngineLoop {
   bool record_held_ = false;           // a recording frame waits to be read
   int emit_record_ = -1;               // recording index to publish after the current commands
   History history_;
+  TrailLog trails_;                    // orbit trails of few-body scenes, sampled every step
   RateMeter meter_;
   CompareRun compare_;                 // run B of an A/B comparison (off unless asked for)
   InspectCache inspect_, inspect_b_;   // the inspected particle in run A and in run B

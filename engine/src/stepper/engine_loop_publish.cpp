@@ -10,6 +10,7 @@ void EngineLoop::publish(int record_index) {
   f.world_serial = world_serial_;
   if (world_) {
     f.snapshot = world_->report().snapshot();
+    trails_.decorate(f.snapshot);
     if (tree_probe_ >= 0) {
       f.snapshot.tree_cells = world_->report().tree_cells(static_cast<std::size_t>(tree_probe_));
       if (!f.snapshot.tree_cells.empty()) f.snapshot.tree_probe = tree_probe_;

@@ -43,6 +43,7 @@ void EngineLoop::step() {
     return;
   }
   meter_.tick();
+  trails_.record(*world_);
   if (history_.due(world_->steps())) sample_history();
 
   bool force = false;

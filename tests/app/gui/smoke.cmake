@@ -2,6 +2,7 @@
 #   smoke: the README's scripted-screenshot command line, then the screenshot checks;
 #   keys:  quick key taps through the key callback (--tap-keys) are all taken;
 #   end:   Space at t_end replays and stops at t_end again;
+#   end_ab: --quit-at-end on the A/B Sod case, ten times: the view drawn from t_end's snapshot, one legend;
 #   match: the GUI records the t = 0 frame of sod, the headless program renders the same frame, and the
 #          two PNGs are compared;
 #   ab:    an A/B comparison on sod (alpha = 1 against alpha = 0) at t = 0.15 with the inspector open on
@@ -66,6 +67,28 @@ elseif(MODE STREQUAL "end")
   if(NOT rc EQUAL 0 OR NOT out MATCHES "last state: step [0-9]+, t = 0.01\n")
     message(FATAL_ERROR "expected Space at t_end to replay and stop at t_end = 0.01")
   endif()
+elseif(MODE STREQUAL "end_ab")
+  # --quit-at-end screenshots the t_end state: the view is drawn from t_end's snapshot (a rate-limited
+  # older picture was kept: "step 399, t = 0.1407" under a status line at step 561), and ten runs give
+  # the same legend.
+  set(first "")
+  foreach(k RANGE 1 10)
+    execute_process(COMMAND ${XVFB_RUN} -a ${GUI} --scene sod --compare-set visc.alpha=0 --compare-set visc.beta=0
+                    --quit-at-end --quit-after-frames 3000 --screenshot ${OUT}/end${k}.png
+                    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err WORKING_DIRECTORY ${OUT})
+    string(REGEX MATCH "last state: step ([0-9]+), t = 0.2\n" state "${out}")
+    set(step "${CMAKE_MATCH_1}")
+    string(REGEX MATCH "view legend: [^\n]*" legend "${out}")
+    if(NOT rc EQUAL 0 OR step STREQUAL "" OR NOT out MATCHES "view drawn from step ${step}, t = 0.2\n")
+      message(FATAL_ERROR "run ${k}: expected the view drawn from the t_end state (step ${step}):\n${out}${err}")
+    endif()
+    if(first STREQUAL "")
+      set(first "${legend}")
+    elseif(NOT legend STREQUAL first)
+      message(FATAL_ERROR "run ${k}: the legend differs from run 1's:\n${legend}\n${first}")
+    endif()
+  endforeach()
+  message("ten runs: ${first}")
 elseif(MODE STREQUAL "ab")
   execute_process(COMMAND ${XVFB_RUN} -a -s "-screen 0 1600x900x24" ${GUI} --scene sod --set time.t_end=0.15
                   --compare-set visc.alpha=0 --compare-set visc.beta=0 --inspect 410 --quit-at-end
