@@ -7,7 +7,7 @@
 namespace sph::gui {
 
 std::string value_text(double v, int digits) {
-  if (std::isnan(v)) return "nan";
+  if (std::isnan(v)) return "\u2014";  // not defined (yet): e.g. a reference before its quantity exists
   if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
   char buf[40];
   std::snprintf(buf, sizeof buf, "%.*g", digits, v);

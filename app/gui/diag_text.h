@@ -11,7 +11,7 @@
 
 namespace sph::gui {
 
-/// v with `digits` significant digits ("%.*g"; "nan", "inf", "-inf" for non-finite values).
+/// v with `digits` significant digits ("%.*g"; "inf", "-inf"; a dash, never "nan", for a value not defined).
 std::string value_text(double v, int digits = 6);
 
 /// "E_tot = 1.2345", plus "  (diverged at step 812)" when the frame diverged.

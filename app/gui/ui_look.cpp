@@ -54,8 +54,9 @@ std::string apply_ui_look(const UiLook& look, bool gl_ready, bool* fallback) {
   ImGuiIO& io = ImGui::GetIO();
   const float px = std::round(kUiFontPx * look.scale);
   io.Fonts->Clear();
-  // Latin-1, Greek (alpha, beta, rho ...), arrows and the check marks of lesson results
-  static const ImWchar ranges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2190, 0x2193, 0x2212, 0x2212, 0x2713, 0x2717, 0};
+  // Latin-1, Greek (alpha, beta, rho ...), the dash of an undefined value, arrows and the check marks of lessons
+  static const ImWchar ranges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2014, 0x2014, 0x2190, 0x2193,
+                                   0x2212, 0x2212, 0x2713, 0x2717, 0};
   const std::string path = ui_font_path();
   std::error_code ec;
   ImFont* font = nullptr;

@@ -4,6 +4,7 @@
 
 #include "sph/compare.h"
 #include "sph/key_value.h"
+#include "summary_item.h"
 
 namespace sph::cli {
 
@@ -42,11 +43,7 @@ std::string compare_summary(const World& b, const CompareSetup& setup) {
   std::snprintf(head, sizeof head, "run %s: t = %g after %lld steps, %zu particles", setup.label_b.c_str(), b.time(),
                 static_cast<long long>(b.steps()), b.particles().size());
   std::string line = head;
-  for (const auto& [name, v] : reference_errors(b)) {
-    char item[96];
-    std::snprintf(item, sizeof item, "  %s = %.6g", name.c_str(), v);
-    line += item;
-  }
+  for (const auto& [name, v] : reference_errors(b)) line += summary_item(name, v);
   return line;
 }
 

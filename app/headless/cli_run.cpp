@@ -18,6 +18,7 @@
 #include "sph/config.h"
 #include "sph/ic_export.h"
 #include "sph/memory_budget.h"
+#include "sph/seed_documents.h"
 #include "sph/world.h"
 #ifdef SPH_HAVE_FRAMES
 #include "progress.h"
@@ -194,6 +195,9 @@ int run_worlds(const RunOptions& opt, const ResumePoint* resume, const RunConfig
       if (frames->active()) target = std::min(target, frames->next_time());
 #endif
       world.step(target - world.time());
+#ifdef SPH_HAVE_FRAMES
+      if (frames->active()) frames->record_trails(world);
+#endif
       if (b) { current = b; advance_b(*b, world.time(), *compare); current = &world; }
       write_step(files, world, b, t_end, current);
 #ifdef SPH_HAVE_FRAMES
@@ -233,7 +237,13 @@ int run_worlds(const RunOptions& opt, const ResumePoint* resume, const RunConfig
 }  // namespace
 
 int list_command() {
-  for (const auto& s : scene_registry()) std::printf("%-24s %dD  %s\n", s.name.c_str(), s.dim, s.description.c_str());
+  std::string text;
+  for (const auto& s : scene_registry()) {
+    char head[40];
+    std::snprintf(head, sizeof head, "%-24s %dD  ", s.name.c_str(), s.dim);
+    text += head + s.description + "\n";
+  }
+  std::fputs(with_seed_citations(text).c_str(), stdout);
   return kOk;
 }
 

@@ -279,13 +279,15 @@ std::string checkpoint_unsupported(const RunOptions& opt) {
 
 int report_stop(int sig, const World& world, const RunOptions& opt, bool checkpointed) {
   const char* name = sig == SIGINT ? "SIGINT" : sig == SIGTERM ? "SIGTERM" : "a signal";
-  std::fprintf(stderr, "sph: stopped by %s at t = %.17g after step %lld\n", name, world.time(),
+  std::fprintf(stderr, "sph: stopped by %s at t = %.6g after step %lld\n", name, world.time(),
                static_cast<long long>(world.steps()));
   if (checkpointed)
     std::fprintf(stderr, "sph: checkpoint %s written; continue with:\n  sph resume %s\n",
                  checkpoint_path(opt.out).c_str(), opt.out.c_str());
+  else if (opt.out.empty())  // e.g. a run that only writes frames: nothing about a flag it did not use
+    std::fprintf(stderr, "sph: no checkpoint (a run with --out DIR writes one when it is stopped)\n");
   else
-    std::fprintf(stderr, "sph: no checkpoint (%s)\n", checkpoint_unsupported(opt).c_str());
+    std::fprintf(stderr, "sph: no checkpoint (A/B runs with --compare are not checkpointed)\n");
   return sig == SIGTERM ? kTerminated : kInterrupted;
 }
 

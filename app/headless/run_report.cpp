@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "sph/thread_wait.h"
+#include "summary_item.h"
 
 namespace sph::cli {
 
@@ -33,11 +34,7 @@ void print_summary(const RunOptions& opt, const RunConfig& cfg, const World& wor
     const std::vector<double> vals = world.report().reference_values();
     std::printf("reference at t = %g (%s):\n", world.time(), world.report().reference()->description().c_str());
     std::string line;
-    for (std::size_t k = 0; k < cols.size(); ++k) {
-      char item[96];
-      std::snprintf(item, sizeof item, "  %s = %.6g", cols[k].name.c_str(), vals[k]);
-      line += item;
-    }
+    for (std::size_t k = 0; k < cols.size(); ++k) line += summary_item(cols[k].name, vals[k]);
     std::printf("%s\n", line.c_str());
   }
   if (b) std::printf("%s\n", compare_summary(*b, *compare).c_str());

@@ -23,6 +23,8 @@ ok "--csv-comments: the time line" grep -q "^# t = 0.05," "$work/comments/partic
 ok "--csv-comments: what L1 is" grep -q "^# L1 = mean over particles" "$work/comments/errors.csv"
 ok "--csv-comments: no csv_meta.json" test ! -e "$work/comments/csv_meta.json"
 ok "summary prints L1" grep -q "L1_rho = " "$work/sod.log"
+ok "summary: a value the reference does not define is a dash" grep -q "rho_min = —" "$work/sod.log"
+ok "summary: no nan" test -z "$(grep -i "= nan" "$work/sod.log")"
 # scene.json is a complete scene file: running it again gives the same result
 "$sph" run "$work/sod/scene.json" --out "$work/again" > /dev/null; check "rerun scene.json" 0 $?
 ok "same particles from scene.json" cmp -s "$work/sod/particles_00004.csv" "$work/again/particles_00004.csv"
@@ -65,7 +67,8 @@ ok "scene-json names the unknown scene" grep -q "unknown scene 'no_such_scene'" 
 ok "scene-json prints nothing for it" test ! -s "$work/none.json"
 mkdir -p "$work/assets"
 "$sph" write-assets "$work/assets" > /dev/null; check "write-assets" 0 $?
-ok "write-assets writes a file per scene" test "$(ls "$work/assets" | wc -l)" = "$("$sph" list | wc -l)"
+ok "write-assets writes a file per scene" test "$(ls "$work/assets" | wc -l)" = "$("$sph" list | grep -cE '^[a-z0-9_]+ +[123]D  ')"
+ok "list names the seed documents it cites" grep -q "^  seed 003: F. Castellanos Fuentes (2010)" <("$sph" list)
 ok "write-assets writes what scene-json prints" cmp -s "$work/assets/sod.json" "$work/sod_asset.json"
 "$sph" write-assets "$work/no_such_folder" 2> /dev/null; check "write-assets into a missing folder" 4 $?
 
@@ -85,6 +88,11 @@ echo '{"scene": "sod", "params": {"kernel": "M9"}}' > "$work/k.json"
 bad bad_kernel_file 3 "k.json" run "$work/k.json"
 echo '{"scene": "sod",' > "$work/m.json"
 bad malformed_file 3 "m.json" run "$work/m.json"
+ok "malformed_file: the parser's position, not its internal id" grep -q "malformed JSON: parse error at line 2" "$work/malformed_file.err"
+ok "malformed_file: no [json.exception...] id" test -z "$(grep json.exception "$work/malformed_file.err")"
+bad choice_case 3 "did you mean M6?" run sod --set kernel.type=m6
+bad choice_typo 3 "did you mean leapfrog?" run sod --set time.integrator=leapfrg
+bad scene_range 3 "out of range \[4, 1000000\]" run sod --set scene.n_left=2
 echo '{"scene": "sod", "extra": 1}' > "$work/e.json"
 bad unknown_top_key 3 "extra" run "$work/e.json"
 bad bad_threads 2 "threads" run sod --threads 0

@@ -88,6 +88,15 @@ signals)
     ok "SIG$sig: resumed files identical" same "$work/whole" "$d"
     ok "SIG$sig: complete files" complete "$d"
   done
+  # a run without --out (frames only) has no checkpoint, and its message names no flag the run did not use
+  f="$work/frames_only"
+  "$sph" run dam_break --set scene.dx=0.05 --until 3 --threads 1 --quiet --frames "$f" --every 0.01 --size 64x48 \
+    2> "$work/fo.err" &
+  pid=$!
+  for _ in $(seq 500); do [ "$(ls "$f" 2> /dev/null | grep -c '\.png$')" -gt 2 ] && break; sleep 0.02; done
+  kill -INT $pid; wait $pid; check "frames only: SIGINT exit code" 130 $?
+  ok "frames only: says a run with --out is checkpointed" grep -q "no checkpoint (a run with --out DIR" "$work/fo.err"
+  ok "frames only: no word of --checkpoint-every" test -z "$(grep -e --checkpoint-every "$work/fo.err")"
   # a second signal stops at once: exit 130, and no partial checkpoint (only a complete one, or none)
   d="$work/twice"
   "$sph" "${run[@]}" --out "$d" 2> /dev/null &

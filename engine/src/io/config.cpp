@@ -10,6 +10,7 @@
 #include "sph/hdf5_ic.h"
 #include "sph/param_table.h"
 #include "sph/suggest.h"
+#include "text/json_error_text.h"
 
 namespace sph {
 
@@ -46,7 +47,7 @@ RunConfig RunConfig::from_json_text(const std::string& text, const std::string& 
   try {
     j = nlohmann::json::parse(text);
   } catch (const nlohmann::json::exception& e) {  // syntax, invalid UTF-8, a number out of double range (1e400)
-    throw ConfigError(path + ": malformed JSON: " + e.what());
+    throw ConfigError(path + ": malformed JSON: " + json_error_text(e));
   }
   if (!j.is_object()) throw ConfigError(path + ": the top level must be an object");
   for (const auto& [key, _] : j.items())

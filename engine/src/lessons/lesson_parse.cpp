@@ -10,6 +10,7 @@
 #include "lesson_metric.h"
 #include "sph/lesson.h"
 #include "sph/lesson_check.h"
+#include "text/json_error_text.h"
 #include "text/number_text.h"
 
 namespace sph {
@@ -146,7 +147,7 @@ Lesson parse_lesson(const std::string& text, const std::string& origin) {
   try {
     doc = json::parse(text);
   } catch (const json::parse_error& e) {
-    throw LessonError(origin + ": not valid JSON (" + e.what() + ")");
+    throw LessonError(origin + ": not valid JSON (" + json_error_text(e) + ")");
   }
   if (!doc.is_object()) throw LessonError(origin + ": the lesson must be a JSON object");
   only_keys(doc, {"title", "summary", "steps"}, origin, "");

@@ -4,6 +4,7 @@
 
 #include "params/help_format.h"
 #include "sph/param_table.h"
+#include "sph/seed_documents.h"
 
 namespace sph {
 
@@ -32,14 +33,14 @@ std::string params_help() {
     out += "\n";
   }
   out += "\nScene values: scene.NAME, each scene its own (`sph help SCENE`).\n";
-  return out;
+  return with_seed_citations(out);
 }
 
 std::string scenes_help() {
   std::string out = "Scenes (`sph help SCENE` explains one; `sph params` lists every run parameter):\n";
   for (const SceneSpec& s : scene_registry())
     out += "  " + pad(s.name, 26) + std::to_string(s.dim) + "D  " + s.category + "\n";
-  return out;
+  return with_seed_citations(out);
 }
 
 }  // namespace sph

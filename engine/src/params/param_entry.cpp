@@ -1,6 +1,8 @@
 // The parts of a parameter-table entry that are not templates (params/param_entry.h).
 #include "params/param_entry.h"
 
+#include "sph/suggest.h"
+
 namespace sph::param_entry {
 
 ParamInfo base(const Common& c) {
@@ -20,7 +22,7 @@ ParamInfo base(const Common& c) {
 std::string not_one_of(std::string_view key, const std::string& text, const std::vector<std::string>& names) {
   std::string err = std::string(key) + " = '" + text + "' is not one of:";
   for (const auto& n : names) err += " " + n;
-  return err;
+  return err + did_you_mean(text, names);
 }
 
 ParamInfo slot(const SlotInfo& s, std::string_view key, std::string_view alias) {

@@ -7,6 +7,7 @@
 
 #include "sph/param_table.h"
 #include "sph/suggest.h"
+#include "text/number_text.h"
 
 namespace sph {
 
@@ -20,8 +21,8 @@ void RunConfig::set(const std::string& key, const std::string& value, const std:
       if (sp.integer && v != std::floor(v))  // (a cast of 1e30 to an integer is undefined)
         throw ConfigError(origin + ": key '" + key + "': '" + value + "' is not an integer");
       if (v < sp.min || v > sp.max)
-        throw ConfigError(origin + ": key '" + key + "' = " + value + " is out of range [" + std::to_string(sp.min) +
-                          ", " + std::to_string(sp.max) + "]");
+        throw ConfigError(origin + ": key '" + key + "' = " + value + " is out of range [" + exact_text(sp.min) + ", " +
+                          exact_text(sp.max) + "]");
       values[name] = v;
       return;
     }

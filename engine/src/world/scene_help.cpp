@@ -6,6 +6,7 @@
 #include "params/help_format.h"
 #include "sph/help_text.h"
 #include "sph/param_table.h"
+#include "sph/seed_documents.h"
 #include "text/number_text.h"
 
 namespace sph {
@@ -26,9 +27,8 @@ void add_param(std::string& out, const ParamInfo& info, const Params& now, const
   out += "\n      " + std::string(info.description) + "\n";
 }
 
-}  // namespace
-
-std::string scene_help(const RunConfig& cfg) {
+/// The help text of scene_help() without the seed documents it cites.
+std::string scene_help_body(const RunConfig& cfg) {
   const SceneSpec& s = *cfg.scene;
   std::string out = s.name + " (" + std::to_string(s.dim) + "D, " + s.category + ")\n  " + s.description + "\n";
   out += "  units: " + s.units.name + "; end time time.t_end = " + shown(exact_text(cfg.params.time.t_end)) + "\n\n";
@@ -88,5 +88,9 @@ std::string scene_help(const RunConfig& cfg) {
   }
   return out;
 }
+
+}  // namespace
+
+std::string scene_help(const RunConfig& cfg) { return with_seed_citations(scene_help_body(cfg)); }
 
 }  // namespace sph

@@ -27,7 +27,7 @@ TEST(DiagText, ColumnsHoldTheWidestValue) {
 }
 
 TEST(DiagText, NonFiniteValuesAreNamed) {
-  EXPECT_EQ(value_text(std::nan("")), "nan");
+  EXPECT_EQ(value_text(std::nan("")), "\u2014");  // a dash: a student never reads "nan" as a value
   EXPECT_EQ(value_text(-std::numeric_limits<double>::infinity()), "-inf");
   EXPECT_EQ(value_text(0.1234567891, 4), "0.1235");
 }
@@ -37,7 +37,7 @@ TEST(DiagText, TitlesGiveTheFrameValueAndTheDivergence) {
   EXPECT_EQ(plot_title("E_tot", 2.5, f), "E_tot = 2.5");
   f.diverged = true;
   f.diverged_step = 812;
-  EXPECT_EQ(plot_title("E_tot", std::nan(""), f), "E_tot = nan  (diverged at step 812)");
+  EXPECT_EQ(plot_title("E_tot", std::nan(""), f), "E_tot = \u2014  (diverged at step 812)");
 }
 
 }  // namespace
