@@ -31,6 +31,14 @@ Widget widget_for(const ParamInfo& info) {
 
 }  // namespace
 
+std::string zero_text(const ParamInfo& info) {
+  const std::size_t k = info.description.rfind("0 = ");
+  if (k == std::string_view::npos || (k > 0 && info.description[k - 1] != ' ')) return "";
+  std::string meaning;
+  for (const char c : info.description.substr(k + 4)) meaning += c == '%' ? std::string("%%") : std::string(1, c);
+  return "0 (" + meaning + ")";  // an ImGui format without a conversion: shown as it is
+}
+
 void param_tooltip(const ParamInfo& info) {
   if (!ImGui::IsItemHovered()) return;
   ImGui::BeginTooltip();
@@ -70,9 +78,12 @@ bool param_widget(const ParamInfo& info, Params& p, bool pending, std::string* e
   } else {
     double v = std::strtod(current.c_str(), nullptr);
     switch (widget_for(info)) {
-      case Widget::Linear:
-        changed = ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &v, &info.min, &info.max, "%.4g");
+      case Widget::Linear: {
+        const std::string zero = v == 0.0 ? zero_text(info) : std::string();
+        changed = ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &v, &info.min, &info.max,
+                                      zero.empty() ? "%.4g" : zero.c_str());
         break;
+      }
       case Widget::Logarithmic: {
         // Slide log10(v); show v itself (the "format" is the formatted value: it holds no conversion).
         // ImGui 1.86's own logarithmic sliders clamp values below 10^-precision, e.g. h_tol = 1e-10.

@@ -12,6 +12,10 @@ namespace sph::gui {
 /// Tooltip for the last item: the parameter's description, unit, range and live/needs-reset.
 void param_tooltip(const ParamInfo& info);
 
+/// What a slider shows at 0 for a parameter whose description ends "0 = MEANING": "0 (MEANING)", e.g.
+/// kernel.eta's "0 (the kernel's default)" rather than a bare 0; "" when 0 means nothing special.
+std::string zero_text(const ParamInfo& info);
+
 /// One widget; true when a new value was written to p (through info.set, so range-checked). A value
 /// the table rejects leaves p unchanged and puts the reason in *err. `pending` marks a value that
 /// differs from what the engine runs with (needs reset).

@@ -135,5 +135,11 @@ TEST_F(ParamWidget, DraggingToTheRightEndGivesTheRangeEnd) {
   EXPECT_TRUE(err_.empty()) << err_;
 }
 
+TEST(ZeroText, ASliderAtZeroSaysWhatZeroMeans) {
+  EXPECT_EQ(zero_text(*find_param("kernel.eta")), "0 (the kernel's default)");  // it showed a bare 0
+  EXPECT_EQ(zero_text(*find_param("density.diffusion")), "0 (off)");
+  EXPECT_EQ(zero_text(*find_param("visc.alpha")), "");  // 0 is just no viscosity
+}
+
 }  // namespace
 }  // namespace sph::gui
