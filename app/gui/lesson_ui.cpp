@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "profile_axis.h"
 #include "sph/lesson_check.h"
 
 namespace sph::gui {
@@ -38,6 +39,13 @@ RunConfig step_config(const LessonStep& step) {
   if (k.type == LessonCheck::Type::Compare) return lesson_config(step, k.a);
   if (k.type == LessonCheck::Type::Falls) return lesson_config(step, {{k.key, exact(k.values.front())}});
   return lesson_config(step, {});
+}
+
+void apply_step_view(const LessonView& step, render::ViewSettings& view) {
+  if (!step.color_by.empty()) view.color_by = step.color_by;
+  if (step.panels) view.panels = *step.panels;
+  if (step.log >= 0) view.log_scale = step.log == 1;
+  if (const auto axis = render::parse_profile_axis(step.profile_axis)) view.profile_axis = *axis;
 }
 
 std::vector<std::string> step_compare(const LessonStep& step) {

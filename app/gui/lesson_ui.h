@@ -9,6 +9,7 @@
 
 #include "sph/config.h"
 #include "sph/lesson.h"
+#include "view_settings.h"
 
 namespace sph::gui {
 
@@ -31,5 +32,8 @@ std::vector<std::string> lesson_files();
 RunConfig step_config(const LessonStep& step);
 /// The A/B overrides of a compare step ("key=value" of the b sets), empty for other checks.
 std::vector<std::string> step_compare(const LessonStep& step);
+/// Puts the step's view (colour-by, panels, log scale, profile axis) into the viewer's settings; what the
+/// step leaves open stays as it was.
+void apply_step_view(const LessonView& step, render::ViewSettings& view);
 
 }  // namespace sph::gui

@@ -36,6 +36,7 @@ void show_lesson_step(GuiState& s, int step) {
   try {
     s.load(step_config(st));
     s.set_compare(step_compare(st));  // empty: no comparison
+    apply_step_view(st.view, s.view);  // what the step's text asks to look at
     s.notify("lesson step " + std::to_string(step + 1) + ": " + st.title);
   } catch (const std::exception& e) {
     s.notify(e.what(), true);
@@ -78,7 +79,9 @@ void panel_lesson(GuiState& s) {
   ImGui::TextUnformatted(st.text.c_str());
   if (!st.change.empty()) ImGui::Text("Change: %s", st.change.c_str());
   if (!st.look_at.empty()) ImGui::Text("Look at: %s", st.look_at.c_str());
-  ImGui::TextDisabled("Claim: %s", claim_text(st).c_str());
+  ImGui::SetWindowFontScale(1.15f);  // the claim is what the step is about: larger, and in colour
+  ImGui::TextColored(ImVec4(1.f, 0.85f, 0.4f, 1.f), "Claim: %s", claim_text(st).c_str());
+  ImGui::SetWindowFontScale(1.f);
   ImGui::PopTextWrapPos();
 
   ImGui::BeginDisabled(L.step == 0);

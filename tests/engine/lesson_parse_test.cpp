@@ -112,6 +112,38 @@ TEST(LessonParse, MalformedInputNamesFileAndKey) {
   }
 }
 
+TEST(LessonParse, AStepsViewIsRead) {
+  const std::string below = R"("check": {"type": "below", "metric": "L1_rho", "limit": 1})";
+  const Lesson l = parse_lesson(
+      lesson_with(std::string(kStep) + R"(, "view": {"color_by": "vx", "panels": ["rho", "v"], "log": true, "profile_axis": "x"}, )" +
+                  below),
+      "l.json");
+  const LessonView& v = l.steps[0].view;
+  EXPECT_EQ(v.color_by, "vx");
+  ASSERT_TRUE(v.panels.has_value());
+  EXPECT_EQ(*v.panels, (std::vector<std::string>{"rho", "v"}));
+  EXPECT_EQ(v.log, 1);
+  EXPECT_EQ(v.profile_axis, "x");
+  EXPECT_NE(lesson_text(l).find("view: colour by vx; panels rho, v; log10 scale; profile along x"), std::string::npos);
+  const LessonView none = parse_lesson(lesson_with(std::string(kStep) + ", " + below), "l.json").steps[0].view;
+  EXPECT_TRUE(none.color_by.empty());
+  EXPECT_FALSE(none.panels.has_value());  // the viewer's panels stay
+  EXPECT_EQ(none.log, -1);
+  const LessonView one = parse_lesson(lesson_with(std::string(kStep) + R"(, "view": {"panels": []}, )" + below), "l.json")
+                             .steps[0].view;
+  ASSERT_TRUE(one.panels.has_value());  // [] : the colour-by field alone
+  EXPECT_TRUE(one.panels->empty());
+  for (const auto& [view, where] : std::vector<std::pair<std::string, std::string>>{
+           {R"("view": 3)", "steps[0].view: must be an object"},
+           {R"("view": {"colour": "vx"})", "steps[0].view.colour: unknown key"},
+           {R"("view": {"panels": "rho"})", "steps[0].view.panels: must be a list"},
+           {R"("view": {"log": 1})", "steps[0].view.log: must be true or false"},
+           {R"("view": {"profile_axis": "z"})", "steps[0].view.profile_axis: 'z' is not one of off, x, y, r"}}) {
+    const std::string msg = error_of(lesson_with(std::string(kStep) + ", " + view + ", " + below));
+    EXPECT_NE(msg.find(where), std::string::npos) << view << " -> " << msg;
+  }
+}
+
 TEST(LessonParse, UnreadableFile) {
   try {
     load_lesson("/nonexistent/l.json");

@@ -3,6 +3,7 @@
 // sph/lesson_check.h). Parsing validates everything a check needs (scene, keys, values, the metric) so a
 // bad file is refused, naming the file and the key, before anything runs.
 #pragma once
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -40,11 +41,22 @@ struct LessonCheck {
   double limit = 0.0;   ///< Below, Above: the bound
 };
 
+/// What a step puts on screen, so that the view shows what its text talks about; each part optional
+/// (empty, or -1: the viewer's choice stays).
+struct LessonView {
+  std::string color_by;             ///< a field of the step's scene (`sph help SCENE`: fields)
+  /// Profile panels: field names, "v" (v_x in 1D, |v| otherwise); [] the colour-by field alone.
+  std::optional<std::vector<std::string>> panels;
+  int log = -1;                     ///< 0: linear colour scale, 1: log10
+  std::string profile_axis;         ///< "off" (the plane), "x", "y", "r" (as --profile-axis)
+};
+
 struct LessonStep {
   std::string title, text;
   std::string scene;  ///< built-in name or scene file (relative to the lesson file's folder if it exists there)
   LessonSets sets;
   std::string change, look_at;
+  LessonView view;
   LessonCheck check;
 };
 

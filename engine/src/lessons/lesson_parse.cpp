@@ -66,6 +66,34 @@ LessonSets sets_of(const json& obj, const char* key, const std::string& origin, 
   return out;
 }
 
+/// "view": {"color_by": "vx", "panels": ["rho", "v"], "log": false, "profile_axis": "x"}
+LessonView view_of(const json& obj, const std::string& origin, const std::string& path) {
+  LessonView v;
+  if (!obj.contains("view")) return v;
+  const json& j = obj["view"];
+  const std::string p = path + "view";
+  if (!j.is_object()) fail(origin, p, "must be an object");
+  only_keys(j, {"color_by", "panels", "log", "profile_axis"}, origin, p);
+  v.color_by = text_of(j, "color_by", false, origin, p + ".");
+  if (j.contains("panels")) {
+    if (!j["panels"].is_array()) fail(origin, p + ".panels", "must be a list of fields ([]: the colour-by field alone)");
+    v.panels.emplace();
+    for (const json& f : j["panels"]) {
+      if (!f.is_string() || f.get<std::string>().empty()) fail(origin, p + ".panels", "every panel must name a field");
+      v.panels->push_back(f.get<std::string>());
+    }
+  }
+  if (j.contains("log")) {
+    if (!j["log"].is_boolean()) fail(origin, p + ".log", "must be true or false");
+    v.log = j["log"].get<bool>() ? 1 : 0;
+  }
+  v.profile_axis = text_of(j, "profile_axis", false, origin, p + ".");
+  if (!v.profile_axis.empty() && v.profile_axis != "off" && v.profile_axis != "x" && v.profile_axis != "y" &&
+      v.profile_axis != "r")
+    fail(origin, p + ".profile_axis", "'" + v.profile_axis + "' is not one of off, x, y, r (as --profile-axis)");
+  return v;
+}
+
 LessonCheck check_of(const json& c, const std::string& origin, const std::string& path) {
   if (!c.is_object()) fail(origin, path, "must be an object");
   only_keys(c, {"type", "metric", "reduce", "until", "key", "values", "a", "b", "smaller", "factor", "limit"}, origin, path);
@@ -162,7 +190,7 @@ Lesson parse_lesson(const std::string& text, const std::string& origin) {
     const json& s = doc["steps"][i];
     const std::string path = "steps[" + std::to_string(i) + "]";
     if (!s.is_object()) fail(origin, path, "must be an object");
-    only_keys(s, {"title", "text", "scene", "set", "change", "look_at", "check"}, origin, path);
+    only_keys(s, {"title", "text", "scene", "set", "change", "look_at", "view", "check"}, origin, path);
     const std::string p = path + ".";
     LessonStep st;
     st.title = text_of(s, "title", true, origin, p);
@@ -176,6 +204,7 @@ Lesson parse_lesson(const std::string& text, const std::string& origin) {
     st.sets = sets_of(s, "set", origin, p);
     st.change = text_of(s, "change", false, origin, p);
     st.look_at = text_of(s, "look_at", false, origin, p);
+    st.view = view_of(s, origin, p);
     if (!s.contains("check")) fail(origin, p + "check", "missing (every step makes a claim the program checks)");
     st.check = check_of(s["check"], origin, p + "check");
     validate_runs(st, origin, path);

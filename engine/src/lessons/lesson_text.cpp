@@ -10,6 +10,21 @@ std::string num(double v) { return g_text(v, 6); }
 
 std::string sets_text(const LessonSets& sets) { return lessons::join_sets(sets, " ", "(defaults)"); }
 
+/// "colour by vx; panels rho, v; log10 scale; profile along x", or "" when the step sets no view.
+std::string view_text(const LessonView& v) {
+  std::string out;
+  const auto add = [&](const std::string& part) { out += (out.empty() ? "" : "; ") + part; };
+  if (!v.color_by.empty()) add("colour by " + v.color_by);
+  if (v.panels) {
+    std::string list;
+    for (const std::string& p : *v.panels) list += (list.empty() ? "" : ", ") + p;
+    add(list.empty() ? "one panel" : "panels " + list);
+  }
+  if (v.log >= 0) add(v.log == 1 ? "log10 scale" : "linear scale");
+  if (!v.profile_axis.empty()) add(v.profile_axis == "off" ? "the plane view" : "profile along " + v.profile_axis);
+  return out;
+}
+
 }  // namespace
 
 std::string metric_label(const LessonCheck& check) {
@@ -48,6 +63,7 @@ std::string lesson_text(const Lesson& l) {
     s += "  scene: " + st.scene + "  " + sets_text(st.sets) + "\n";
     if (!st.change.empty()) s += "  change: " + st.change + "\n";
     if (!st.look_at.empty()) s += "  look at: " + st.look_at + "\n";
+    if (const std::string v = view_text(st.view); !v.empty()) s += "  view: " + v + "\n";
     s += "  claim: " + claim_text(st) + "\n";
   }
   return s;

@@ -33,5 +33,34 @@ TEST(LessonUi, StepConfigIsTheChecksFirstRun) {
   EXPECT_EQ(step_config(l.steps[2]).scene->name, "sod");
 }
 
+TEST(LessonUi, AStepPutsItsViewOnScreenAndLeavesTheRest) {
+  render::ViewSettings view;
+  view.color_by = "rho";
+  view.panels = {"rho", "p"};
+  view.cmap = "magma";
+  LessonView step;
+  step.color_by = "vx";
+  step.panels = std::vector<std::string>{"v"};
+  step.log = 1;
+  step.profile_axis = "r";
+  apply_step_view(step, view);
+  EXPECT_EQ(view.color_by, "vx");
+  EXPECT_EQ(view.panels, (std::vector<std::string>{"v"}));
+  EXPECT_TRUE(view.log_scale);
+  EXPECT_EQ(view.profile_axis, 3);  // r
+  EXPECT_EQ(view.cmap, "magma");    // not the step's to change
+  apply_step_view(LessonView{}, view);  // a step without a view changes nothing
+  EXPECT_EQ(view.color_by, "vx");
+  EXPECT_TRUE(view.log_scale);
+  LessonView one;
+  one.panels = std::vector<std::string>{};  // [] : one panel, the colour-by field
+  one.log = 0;
+  one.profile_axis = "off";
+  apply_step_view(one, view);
+  EXPECT_TRUE(view.panels.empty());
+  EXPECT_FALSE(view.log_scale);
+  EXPECT_EQ(view.profile_axis, -1);
+}
+
 }  // namespace
 }  // namespace sph::gui
