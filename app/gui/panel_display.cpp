@@ -218,6 +218,12 @@ void panel_display(GuiState& s) {
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("Colour (and the profile's y axis) by log10 of the field: for densities spanning decades\n"
                       "(a collapse). Values <= 0 are not drawn. A fixed range is then in log10 units.");
+  ImGui::SameLine();
+  ImGui::Checkbox("auto", &v.auto_log);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Plane and 3D views: colour by log10 when the field spans more than two decades\n"
+                      "between its 1st and 99th percentiles (a collapsed sphere's density), so that most\n"
+                      "particles are not one colour");
   if (!v.auto_range) {
     float r[2] = {v.range_min, v.range_max};
     if (ImGui::InputFloat2("range", r, "%.4g", ImGuiInputTextFlags_EnterReturnsTrue) && r[1] > r[0]) {

@@ -62,6 +62,9 @@ void add_frame_options(CLI::App* run, CommandLine& cl) {
   run->add_option("--cmap", cl.run.cmap, "colour map: viridis, magma, cividis, coolwarm");
   run->add_option("--range", cl.run.range, "colour range: auto (min..max), pLO:HI (between percentiles, e.g. p1:99 as the GUI) or MIN:MAX (in log10 units with --log)");
   run->add_flag("--log", cl.run.log_scale, "colour by log10 of the field (values <= 0 are not drawn)");
+  run->add_flag("--linear", cl.run.linear,
+                "plane and 3D views: a linear colour scale even for a field spanning more than two decades "
+                "(by default such a field is coloured by log10)");
   run->add_option("--profile-axis", cl.run.profile_axis,
                   "2D scenes: plot the field against x or y (with its reference curve) instead of the plane; off");
   run->add_option("--video", cl.run.video, "also make this .mp4, .webm or .gif with ffmpeg, and VIDEO_last.png (frames go to "

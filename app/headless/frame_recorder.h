@@ -43,6 +43,7 @@ struct FrameOptions {
   float range_min = 0, range_max = 1;
   float percentile_lo = 0, percentile_hi = 100;  ///< auto range between these percentiles (--range pLO:HI)
   bool log_scale = false;     ///< colour by log10 of the field (--log)
+  bool auto_log = true;       ///< log10 when a field spans more than two decades (off: --linear)
   std::string profile_axis = "off";  ///< 2D: "x" or "y" (profile of the field against it), or "off"
   std::vector<std::string> panels;   ///< profiles: one panel per field (ViewSettings::panels)
   std::string video;          ///< .mp4 (H.264), .webm or .gif (animated, for slides) to make, or empty

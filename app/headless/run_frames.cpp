@@ -56,6 +56,7 @@ std::unique_ptr<FrameRecorder> make_recorder(const RunOptions& opt) {
   fo.cmap = opt.cmap;
   set_range(opt.range, fo);
   fo.log_scale = opt.log_scale;
+  fo.auto_log = !opt.linear;
   fo.profile_axis = opt.profile_axis;
   fo.panels = split_names(opt.panels);
   fo.video = opt.video;

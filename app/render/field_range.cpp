@@ -62,4 +62,9 @@ std::string missing_field_message(const sph::Snapshot& snap, std::string_view na
   return msg;
 }
 
+bool spans_decades(std::span<const float> values, std::span<const std::uint8_t> kind) {
+  const ValueRange r = percentile_range(values, 1.f, 99.f, kind);
+  return r.min > 0.f && r.max > 100.f * r.min;
+}
+
 }  // namespace sph::render

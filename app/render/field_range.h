@@ -28,6 +28,10 @@ ValueRange resolve_range(const sph::SnapshotField& field, const ViewSettings& vi
 /// The fluid's finite values between percentiles lo and hi (in [0, 100]; nearest rank), not widened;
 /// {0, 0} without a finite value.
 ValueRange percentile_range(std::span<const float> values, float lo, float hi, std::span<const std::uint8_t> kind = {});
+/// Whether the fluid's values between the 1st and 99th percentiles are all positive and span more than
+/// two decades (hi > 100 lo): a linear colour map then shows one colour on most particles (Evrard's
+/// density, 0.07 to 10.5), so the plane and 3D views colour by log10 (ViewSettings::auto_log).
+bool spans_decades(std::span<const float> values, std::span<const std::uint8_t> kind = {});
 /// Same widening for any [lo, hi] (also used for plot limits).
 ValueRange widen_degenerate(float lo, float hi);
 

@@ -43,7 +43,10 @@ void log10_field(const sph::SnapshotField& in, sph::SnapshotField* out) {
   out->min = out->max = std::nanf("");  // resolve_range recomputes them over the finite values
 }
 
-ShownField choose_field(const sph::Snapshot& snap, const ViewSettings& view, sph::SnapshotField* log_storage) {
+/// The field shown and its range; `compared`: an A/B frame, whose shared range is linear unless the view
+/// asks for log10 (no automatic log scale).
+ShownField choose_field(const sph::Snapshot& snap, const ViewSettings& view, sph::SnapshotField* log_storage,
+                        bool compared) {
   ShownField s;
   s.cmap = parse_colormap(view.cmap).value_or(Colormap::Viridis);
   if (!parse_colormap(view.cmap)) s.warning = "unknown colour map '" + view.cmap + "'";
@@ -53,7 +56,9 @@ ShownField choose_field(const sph::Snapshot& snap, const ViewSettings& view, sph
     s.warning = "no field '" + view.color_by + "'";
   }
   if (s.field == nullptr) return s;
-  if (view.log_scale) {
+  const bool auto_log = view.auto_log && !compared && view.auto_range && !draws_profile(snap.dim, view.profile_axis) &&
+                        spans_decades(s.field->values, snap.kind);
+  if (view.log_scale || auto_log) {
     log10_field(*s.field, log_storage);
     s.field = log_storage;
   }
@@ -118,7 +123,7 @@ void Renderer::render(const FrameScene& in, const ViewSettings& view, int width,
     std::erase_if(d.untrailed.outlines, trail);
     scene.a = &d.untrailed;
   }
-  ShownField shown = choose_field(*scene.a, view, &d.log_field);
+  ShownField shown = choose_field(*scene.a, view, &d.log_field, scene.b != nullptr);
   if (scene.b && shown.field) shown.range = compare_range(*scene.a, *scene.b, view, *shown.field);
   compose(d.frame, scene, view, shown, width, height);
   draw(d, shown, width, height);

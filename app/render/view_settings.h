@@ -39,6 +39,9 @@ struct ViewSettings {
   float range_min = 0.f, range_max = 1.f;  ///< fixed range [field units] (log10 of them with log_scale)
   bool show_trails = true;       ///< few-body 2D scenes: draw each particle's path so far (sph::TrailLog)
   bool log_scale = false;        ///< colour (and profile axis) by log10 of the field; values <= 0 are not drawn
+  /// Plane and 3D views with an auto range: colour by log10 when the field is positive and spans more than
+  /// two decades between its 1st and 99th percentiles (render::spans_decades); profiles keep their axis.
+  bool auto_log = true;
 
   Camera2D camera2d;
   OrbitCamera orbit;

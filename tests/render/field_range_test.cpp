@@ -58,5 +58,19 @@ TEST(FieldRange, ConstantFieldIsWidenedUnderPercentilesToo) {
   EXPECT_GT(r.max, 0.7f);
 }
 
+TEST(FieldRange, SpansDecadesBetweenItsPercentiles) {
+  std::vector<float> v;
+  for (int i = 0; i < 1000; ++i) v.push_back(std::pow(10.f, 3.f * static_cast<float>(i) / 999.f));  // 1 .. 1000
+  EXPECT_TRUE(spans_decades(v));
+  for (float& x : v) x = 1.f + x / 1000.f;  // 1 .. 2
+  EXPECT_FALSE(spans_decades(v));
+  v[0] = 1e-6f;  // one outlier below the 1st percentile does not make it span decades
+  EXPECT_FALSE(spans_decades(v));
+  std::vector<float> signed_values(v.size(), 1.f);
+  for (std::size_t i = 0; i < 50; ++i) signed_values[i] = -5.f;  // 5% non-positive: no log10
+  signed_values.back() = 1e6f;
+  EXPECT_FALSE(spans_decades(signed_values));
+}
+
 }  // namespace
 }  // namespace sph::render

@@ -51,6 +51,31 @@ TEST_F(Render2D, ParticleCentreHasTheMapColourOfItsValue) {
   }
 }
 
+TEST_F(Render2D, AFieldSpanningDecadesIsColouredByLog10UnlessLinear) {
+  // rho = 10^(3 i / (nx - 1)) along x, 1 to 1000: linear colours put all but the last columns near the
+  // bottom of the map (a collapsed sphere in one colour); log10 spreads them evenly
+  Snapshot s = lattice_2d(kNx, kNy);
+  SnapshotField& rho = const_cast<SnapshotField&>(*s.find("rho"));
+  for (int j = 0; j < kNy; ++j)
+    for (int i = 0; i < kNx; ++i)
+      rho.values[lattice_index(kNx, i, j)] = std::pow(10.f, 3.f * static_cast<float>(i) / (kNx - 1));
+  rho.min = 1.f;
+  rho.max = 1000.f;
+  const std::size_t k = lattice_index(kNx, kNx / 2, 4);  // 10^(30/19) = 38: near the log middle
+  const float t_log = std::log10(rho.values[k]) / 3.f, t_lin = (rho.values[k] - 1.f) / 999.f;
+  for (bool linear : {false, true}) {
+    ViewSettings v;
+    v.auto_log = !linear;
+    const auto rgba = render(s, v);
+    float px, py;
+    ASSERT_TRUE(layout().to_pixel(s.x[k], s.y[k], 0.f, &px, &py));
+    const Pixel want = to_pixel8(colormap_rgb(Colormap::Viridis, linear ? t_lin : t_log));
+    const Pixel got = pixel_at(rgba, kWidth, static_cast<int>(px), static_cast<int>(py));
+    EXPECT_LE(channel_distance(got, want), 3) << (linear ? "linear" : "auto log") << ": got " << describe(got)
+                                              << " want " << describe(want);
+  }
+}
+
 TEST_F(Render2D, ColourBarShowsTheMapFromMinToMax) {
   const auto rgba = render(lattice_2d(kNx, kNy), ViewSettings{});
   const PixelRect bar = layout().colorbar;
