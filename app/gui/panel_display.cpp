@@ -164,6 +164,20 @@ void profile_controls(render::ViewSettings& v, const Snapshot& snap) {
   ImGui::SliderFloat("dot size", &v.point_px, 1.f, 8.f, "%.1f px");
 }
 
+/// 3D: the cutaway, an axis and the plane's place between the box's walls.
+void cut_controls(const Snapshot& snap, render::ViewSettings& v) {
+  static const char* const kAxes[] = {"no cut", "cut x", "cut y", "cut z"};
+  int item = v.cut_axis + 1;
+  ImGui::SetNextItemWidth(6.f * ImGui::GetFontSize());
+  if (ImGui::Combo("##cut", &item, kAxes, 4)) v.cut_axis = item - 1;
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Cutaway: draw only the particles on this side of a plane, so the inside shows");
+  if (v.cut_axis < 0) return;
+  const int a = std::clamp(v.cut_axis, 0, 2);
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(-1.f);
+  ImGui::SliderFloat("##cut_at", &v.cut_at, snap.bounds[2 * a], snap.bounds[2 * a + 1], "keep <= %.3g");
+}
+
 /// The plane or 3D view: particle size, walls and outlines, the camera, the push's settings (2D).
 void particle_controls(GuiState& s, const StepperFrame& f, render::ViewSettings& v) {
   const Snapshot& snap = f.snapshot;
@@ -184,6 +198,7 @@ void particle_controls(GuiState& s, const StepperFrame& f, render::ViewSettings&
   ImGui::SameLine();
   ImGui::TextDisabled(snap.dim == 2 ? "drag: pan, right drag: push, wheel: zoom" : "drag: orbit, wheel: zoom");
   if (snap.dim == 2) push_settings(s, f);
+  if (snap.dim == 3) cut_controls(snap, v);
 }
 
 /// Projector mode: the whole UI's scale (ui_look.h, applied by the main loop between frames) and theme.

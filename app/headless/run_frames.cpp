@@ -11,6 +11,7 @@
 #include "profile_view.h"
 #include "run_output.h"
 #include "sph/memory_budget.h"
+#include "sph/param_table.h"
 #include "sph/suggest.h"
 #include "sph/world.h"
 #include "value_parsers.h"
@@ -57,6 +58,15 @@ std::unique_ptr<FrameRecorder> make_recorder(const RunOptions& opt) {
   set_range(opt.range, fo);
   fo.log_scale = opt.log_scale;
   fo.auto_log = !opt.linear;
+  if (!opt.cut.empty()) {  // AXIS=VALUE
+    double at = 0.0;
+    const std::string axes = "xyz";
+    if (opt.cut.size() < 3 || opt.cut[1] != '=' || axes.find(opt.cut[0]) == std::string::npos ||
+        !parse_number(opt.cut.substr(2), at))
+      throw ConfigError("--cut " + opt.cut + ": expected AXIS=VALUE with AXIS x, y or z, e.g. z=0");
+    fo.cut_axis = static_cast<int>(axes.find(opt.cut[0]));
+    fo.cut_at = static_cast<float>(at);
+  }
   fo.profile_axis = opt.profile_axis;
   fo.panels = split_names(opt.panels);
   fo.video = opt.video;
@@ -117,6 +127,8 @@ RunFrames::RunFrames(const RunOptions& opt, const RunConfig& cfg, const World& w
   if (rec_ && rec_->view().profile_axis >= 0 && !render::draws_profile(cfg.scene->dim, rec_->view().profile_axis))
     std::fprintf(stderr, "sph: note: %s applies to 2D scenes; %s is %dD, so it is ignored\n", flag::kProfileAxis,
                  cfg.scene->name.c_str(), cfg.scene->dim);
+  if (rec_ && !opt.cut.empty() && cfg.scene->dim != 3)
+    std::fprintf(stderr, "sph: note: --cut applies to 3D scenes; ignored\n");
   if (rec_ && !opt.panels.empty() && !render::draws_profile(cfg.scene->dim, rec_->view().profile_axis))
     std::fprintf(stderr, "sph: note: %s applies to profiles (1D scenes, or %s x|y|r); ignored\n", flag::kPanels,
                  flag::kProfileAxis);

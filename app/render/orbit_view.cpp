@@ -72,7 +72,10 @@ void compose_orbit(FrameBuild& f, const sph::Snapshot& snap, const ViewSettings&
   add_box(f, b, f.camera.eye, std::clamp(view.orbit.up_axis, 0, 2));
 
   const bool from_h = view.size_mode == SizeMode::Smoothing && has_smoothing_lengths(snap);
-  build_instances(snap, shown, {Placement::Positions, 0, view.h_scale, view.show_walls}, &f.instances, &f.index);
+  InstanceOptions o{Placement::Positions, 0, view.h_scale, view.show_walls};
+  o.cut_axis = view.cut_axis;  // a cutaway: the inside of a sphere shows on the cut
+  o.cut_at = view.cut_at;
+  build_instances(snap, shown, o, &f.instances, &f.index);
   f.pixel_radius = from_h ? 0.f : view.point_px;
   f.min_radius = view.min_radius_px;
   f.shaded = true;

@@ -25,6 +25,7 @@ void build_instances(const sph::Snapshot& snap, const ShownField& shown, const I
   for (std::size_t i = 0; i < n; ++i) {
     const bool wall = snap.is_wall(i);
     if (wall && !keep_walls) continue;
+    if (!profile && o.cut_axis >= 0 && at(*coords[std::min(o.cut_axis, 2)], i, 0.f) > o.cut_at) continue;  // cut away
     const float value = values ? at(*values, i, kNaN) : kNaN;
     if (profile) {
       if (o.axis == kRadialAxis) {

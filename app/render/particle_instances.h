@@ -24,6 +24,8 @@ struct InstanceOptions {
   /// Profile: the vertical values (one per snapshot particle) instead of the shown field's
   const std::vector<float>* y = nullptr;
   bool solid = false;        ///< flag every instance as a wall: drawn in one colour (FixedColors::wall)
+  int cut_axis = -1;         ///< Positions: leave out particles whose coordinate cut_axis is > cut_at
+  float cut_at = 0.f;
 };
 
 /// Appends one instance per shown particle: value = shown field (NaN when no field is shown), wall =

@@ -56,6 +56,9 @@ struct ViewSettings {
   bool show_tree = true;       ///< 2D/3D: draw the snapshot's Barnes-Hut cells (render::add_tree_overlay) when it has them
   bool show_outlines = true;   ///< 2D: draw the snapshot's reference outlines over the particles
   int profile_axis = -1;       ///< 2D: -1 = the plane view; 0 / 1 = profile of the field against x / y
+  /// 3D cutaway: -1 none; 0, 1, 2: only the particles with x, y or z <= cut_at are drawn (the inside shows)
+  int cut_axis = -1;
+  float cut_at = 0.f;          ///< [length]
   int text_scale = 0;          ///< integer pixel scale of the 13 px font; 0 = from the frame height
   /// Profiles: one panel per field, e.g. {"rho", "v", "p", "u"} as the seed documents show shock tubes
   /// ("v" is v_x in 1D, |v| otherwise); empty: the colour-by field alone.
