@@ -31,6 +31,8 @@ struct StepperOptions {
   double record_every = 0.0;              ///< record from t = 0 of the first scene (see set_record_interval)
   int nice = 0;                           ///< Linux: niceness added to the engine thread (and the OpenMP team it
                                           ///< starts), e.g. to keep a display fluid when the engine uses every core
+  double compare_budget = 10.0;           ///< an A/B run B that needs longer than this to follow one step of
+                                          ///< run A (its time step collapsed) ends the comparison [s]
 };
 
 /// One point of the running diagnostics, for plots against simulated time.

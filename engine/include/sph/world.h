@@ -2,6 +2,7 @@
 // runs and tests call step() directly (no threads); the GUI's stepper thread owns one World.
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -49,8 +50,10 @@ class World {
   void set_adaptive_threads(bool on) { adaptive_threads_ = on; }
   /// The team the last step ran on.
   int last_team() const { return last_team_; }
-  /// Steps until time t (the last step is shortened to land on t exactly).
-  void advance_to(double t);
+  /// Steps until time t (the last step is shortened to land on t exactly); with `interrupted`, asks it
+  /// before each step and returns false when it said stop short of t (the GUI's run B catching up with
+  /// run A takes the user's commands between its steps).
+  bool advance_to(double t, const std::function<bool()>& interrupted = {});
   /// The timestep the next step would take (from the last force evaluation).
   double next_dt();
 

@@ -1,5 +1,7 @@
 #include "compare_run.h"
 
+#include <cstdio>
+
 namespace sph::detail {
 
 bool CompareRun::start(const RunConfig& a, const std::vector<std::string>& overrides, std::string* err,
@@ -40,17 +42,25 @@ bool CompareRun::follow(const Params& a, std::string* err) {
   }
 }
 
-bool CompareRun::advance_to(double t, std::string* err) {
-  if (!world_) return true;
+CompareRun::Advance CompareRun::advance_to(double t, std::string* err, const std::function<bool()>& interrupted) {
+  if (!world_) return Advance::Done;
   try {
-    world_->advance_to(t);
-    return true;
+    return world_->advance_to(t, interrupted) ? Advance::Done : Advance::Behind;
   } catch (const std::exception& e) {
     std::string label;
     for (const std::string& o : overrides_) label += (label.empty() ? "" : ", ") + o;
     *err = "run B (" + label + "): " + e.what();
-    return false;
+    return Advance::Failed;
   }
+}
+
+std::string CompareRun::too_slow(double t, double budget) const {
+  std::string label;
+  for (const std::string& o : overrides_) label += (label.empty() ? "" : ", ") + o;
+  char what[200];
+  std::snprintf(what, sizeof what, "it needed more than %g s to follow one step of run A (B at t = %.6g, A at %.6g; "
+                "B's last time step %.3g): the comparison stopped", budget, world_->time(), t, world_->report().diagnostics().dt);
+  return "run B (" + label + ") cannot keep up: " + what;
 }
 
 void CompareRun::sample() {

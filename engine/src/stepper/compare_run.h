@@ -2,6 +2,7 @@
 // scene, params and scene values with B's overrides applied, stepped to A's times, following A's posted
 // params (with its overrides kept), sampled into a history at A's sampling times.
 #pragma once
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -31,8 +32,12 @@ class CompareRun {
   void stop();
   /// B adopts A's params with its overrides applied again; false with *err if B cannot run them.
   bool follow(const Params& a, std::string* err);
-  /// Steps B to time t; false with *err naming run B if it diverged or failed.
-  bool advance_to(double t, std::string* err);
+  enum class Advance { Done, Behind, Failed };
+  /// Steps B to time t, asking `interrupted` before each step: Done at t, Behind when it said stop first
+  /// (B goes on from there on the next call), Failed with *err naming run B if it diverged or failed.
+  Advance advance_to(double t, std::string* err, const std::function<bool()>& interrupted = {});
+  /// "run B (...) cannot keep up: ..." for a B still behind A's time t after `budget` seconds.
+  std::string too_slow(double t, double budget) const;
   void sample();                   ///< one history sample (call with A's)
   void fill(CompareFrame& f) const;  ///< everything but the inspection
 

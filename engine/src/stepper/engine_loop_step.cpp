@@ -34,7 +34,24 @@ void EngineLoop::step() {
     error_ = std::string("step failed: ") + e.what();
     diverged_ = true;
   }
-  if (!diverged_ && !compare_.advance_to(world_->time(), &error_)) diverged_ = true;  // run B to the same time
+  // Run B to the same time. A B whose dt collapses crawled on inside this call, deaf to every command, and
+  // the program could not quit (the soak test hung in ~Stepper on one): a stop interrupts it, and a B that
+  // needs longer than the budget for one step of A ends the comparison, saying so. Other commands wait
+  // for B, so that every frame shows both runs at one time.
+  if (!diverged_ && compare_.on()) {
+    const auto until = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                          std::chrono::duration<double>(options_.compare_budget));
+    const auto enough = [&] { return inbox_.stop_requested() || Clock::now() > until; };
+    switch (compare_.advance_to(world_->time(), &error_, enough)) {
+      case CompareRun::Advance::Done: break;
+      case CompareRun::Advance::Failed: diverged_ = true; break;
+      case CompareRun::Advance::Behind:
+        if (inbox_.stop_requested()) return;  // stopping: nothing more is published
+        error_ = compare_.too_slow(world_->time(), options_.compare_budget);
+        compare_.stop();  // A goes on alone
+        break;
+    }
+  }
   if (diverged_) {
     running_ = false;
     single_steps_ = 0;

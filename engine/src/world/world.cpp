@@ -203,8 +203,9 @@ void World::after_step() {
   current_ = false;  // the state changed: the next step evaluates first
 }
 
-void World::advance_to(double t_target) {
+bool World::advance_to(double t_target, const std::function<bool()>& interrupted) {
   while (t_ < t_target * (1.0 - 1e-14) - 1e-300) {
+    if (interrupted && interrupted()) return false;
     const double remaining = t_target - t_;
     double dt = next_dt();
     // land exactly on the target; avoid a sliver of a step at the end
@@ -217,6 +218,7 @@ void World::advance_to(double t_target) {
   // is landed on without a step, so that run B shows exactly run A's time (the soak test saw them differ
   // in the last digits).
   if (t_ < t_target) t_ = t_target;
+  return true;
 }
 
 }  // namespace sph
