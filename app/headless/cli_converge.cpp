@@ -58,7 +58,7 @@ Snapshot plot_of(const ConvergenceResult& r) {
   std::snprintf(title, sizeof title, "convergence of %s: %s at t = %g against %s, fitted slope %.3f", r.scene.c_str(),
                 r.column.c_str(), r.t, r.key.c_str(), r.slope);
   s.title = title;
-  s.x_label = "log10 h (initial spacing)";
+  s.x_label = "log10 " + r.step_name() + " (" + r.step_meaning() + ")";  // not "h": the smoothing length
   s.points_label = "runs";
   s.curve_label = "least-squares fit";
   return s;

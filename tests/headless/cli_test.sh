@@ -156,6 +156,7 @@ fi
 "$sph" converge burgers_upwind --values 60,120,240 --out "$work/conv" --quiet
 check "converge" 0 $?
 ok "converge csv" test "$(grep -c '^[0-9]' "$work/conv/converge.csv")" = 3
+ok "converge csv: the spacing is dx, not h (the smoothing length)" grep -q "^value,dx,error,order" "$work/conv/converge.csv"
 ok "converge md" grep -q "| 240 |" "$work/conv/converge.md"
 if "$sph" run --help | grep -q -- "--frames"; then
   ok "converge plot" test "$(png_size "$work/conv/converge.png")" = "1280x720"

@@ -37,6 +37,10 @@ struct ConvergenceResult {
   double t = 0.0;
   std::vector<ConvergenceRun> runs;
   double slope = 0.0;  ///< least-squares d log e / d log h over all runs
+  /// What h is, as the outputs name it: "dx" (the initial spacing) or "dt" (a timestep study). Not "h",
+  /// which is the smoothing length everywhere else.
+  std::string step_name() const { return key == "time.dt" ? "dt" : "dx"; }
+  std::string step_meaning() const { return key == "time.dt" ? "the time step" : "the initial spacing"; }
 };
 
 /// The study's key, values and time once the scene's defaults are filled in; throws ConfigError when

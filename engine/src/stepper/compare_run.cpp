@@ -47,20 +47,24 @@ CompareRun::Advance CompareRun::advance_to(double t, std::string* err, const std
   try {
     return world_->advance_to(t, interrupted) ? Advance::Done : Advance::Behind;
   } catch (const std::exception& e) {
-    std::string label;
-    for (const std::string& o : overrides_) label += (label.empty() ? "" : ", ") + o;
-    *err = "run B (" + label + "): " + e.what();
+    *err = label() + ": " + e.what();
     return Advance::Failed;
   }
 }
 
+std::string CompareRun::label() const {
+  std::string list;
+  for (const std::string& o : overrides_) list += (list.empty() ? "" : ", ") + o;
+  return "run B (" + list + ")";
+}
+
 std::string CompareRun::too_slow(double t, double budget) const {
-  std::string label;
-  for (const std::string& o : overrides_) label += (label.empty() ? "" : ", ") + o;
   char what[200];
-  std::snprintf(what, sizeof what, "it needed more than %g s to follow one step of run A (B at t = %.6g, A at %.6g; "
-                "B's last time step %.3g): the comparison stopped", budget, world_->time(), t, world_->report().diagnostics().dt);
-  return "run B (" + label + ") cannot keep up: " + what;
+  std::snprintf(what, sizeof what,
+                "it needed more than %g s to follow one step of run A (B at t = %.6g, A at %.6g; B's last time step "
+                "%.3g): the comparison stopped",
+                budget, world_->time(), t, world_->report().diagnostics().dt);
+  return label() + " cannot keep up: " + what;
 }
 
 void CompareRun::sample() {

@@ -42,6 +42,7 @@ class CompareRun {
   void fill(CompareFrame& f) const;  ///< everything but the inspection
 
  private:
+  std::string label() const;  ///< "run B (its overrides)" for messages
   std::unique_ptr<World> world_;
   std::vector<std::string> overrides_;
   History history_;

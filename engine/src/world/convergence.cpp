@@ -101,8 +101,9 @@ std::string convergence_csv(const ConvergenceResult& r, bool comment) {
   std::string s;
   if (comment)
     s = "# " + r.scene + ": " + r.column + " (" + r.column_description + ") at t = " + text(r.t) + " against " + r.key +
-        "; h = initial spacing, order = log(e1/e2)/log(h1/h2); fitted slope " + text(r.slope) + "\n";
-  s += "value,h,error,order,wall_s,steps\n";
+        "; " + r.step_name() + " = " + r.step_meaning() + ", order = log(e1/e2)/log(" + r.step_name() + "1/" +
+        r.step_name() + "2); fitted slope " + text(r.slope) + "\n";
+  s += "value," + r.step_name() + ",error,order,wall_s,steps\n";
   for (const ConvergenceRun& run : r.runs)
     s += text(run.value) + "," + text(run.h) + "," + text(run.error) + "," +
          (std::isnan(run.order) ? std::string() : text(run.order)) + "," + text(run.wall_s) + "," +
@@ -114,7 +115,8 @@ std::string convergence_markdown(const ConvergenceResult& r) {
   char buf[256];
   std::string s = "Convergence of `" + r.scene + "`: " + r.column + " at t = " + format(r.t) + " (" +
                   r.column_description + ")\n\n";
-  s += "| " + r.key + " | h | " + r.column + " | order | wall [s] | steps |\n|---:|---:|---:|---:|---:|---:|\n";
+  s += "| " + r.key + " | " + r.step_name() + " | " + r.column +
+       " | order | wall [s] | steps |\n|---:|---:|---:|---:|---:|---:|\n";
   for (const ConvergenceRun& run : r.runs) {
     char order[32] = "-";
     if (!std::isnan(run.order)) std::snprintf(order, sizeof order, "%.3f", run.order);
@@ -122,7 +124,8 @@ std::string convergence_markdown(const ConvergenceResult& r) {
                   run.wall_s, static_cast<long long>(run.steps));
     s += buf;
   }
-  std::snprintf(buf, sizeof buf, "\nLeast-squares slope of log e against log h: %.3f\n", r.slope);
+  std::snprintf(buf, sizeof buf, "\nLeast-squares slope of log e against log %s: %.3f\n", r.step_name().c_str(),
+                r.slope);
   s += buf;
   return s;
 }
