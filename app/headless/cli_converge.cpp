@@ -13,59 +13,11 @@
 #include "sph/convergence.h"
 #include "sph/world.h"
 #ifdef SPH_HAVE_FRAMES
+#include "convergence_plot.h"
 #include "frame_recorder.h"
 #endif
 
 namespace sph::cli {
-namespace {
-
-#ifdef SPH_HAVE_FRAMES
-/// log10 e against log10 h as a 1D profile: the runs as points, the fitted line as the exact curve.
-Snapshot plot_of(const ConvergenceResult& r) {
-  Snapshot s;
-  s.scene = "converge";
-  s.dim = 1;
-  s.count = r.runs.size();
-  SnapshotField f{"log10_e", "log10 " + r.column, {}, 0.f, 0.f};
-  float x_lo = 1e30f, x_hi = -1e30f;
-  for (const ConvergenceRun& run : r.runs) {
-    const float x = static_cast<float>(std::log10(run.h)), y = static_cast<float>(std::log10(run.error));
-    s.x.push_back(x);
-    s.y.push_back(0.f);
-    s.z.push_back(0.f);
-    s.h.push_back(0.f);
-    f.values.push_back(y);
-    x_lo = std::min(x_lo, x);
-    x_hi = std::max(x_hi, x);
-  }
-  f.min = *std::min_element(f.values.begin(), f.values.end());
-  f.max = *std::max_element(f.values.begin(), f.values.end());
-  // the least-squares line through the points: log e = c + slope log h
-  double mx = 0, my = 0;
-  for (std::size_t k = 0; k < s.count; ++k) { mx += s.x[k]; my += f.values[k]; }
-  mx /= static_cast<double>(s.count);
-  my /= static_cast<double>(s.count);
-  ExactCurve line{"log10_e", {}, {}, 0};
-  const float pad = 0.05f * (x_hi - x_lo);
-  for (float x : {x_lo - pad, x_hi + pad}) {
-    line.x.push_back(x);
-    line.value.push_back(static_cast<float>(my + r.slope * (x - mx)));
-  }
-  s.fields.push_back(std::move(f));
-  s.exact.push_back(std::move(line));
-  s.bounds = {x_lo - pad, x_hi + pad, 0, 1, 0, 1};
-  char title[256];
-  std::snprintf(title, sizeof title, "convergence of %s: %s at t = %g against %s, fitted slope %.3f", r.scene.c_str(),
-                r.column.c_str(), r.t, r.key.c_str(), r.slope);
-  s.title = title;
-  s.x_label = "log10 " + r.step_name() + " (" + r.step_meaning() + ")";  // not "h": the smoothing length
-  s.points_label = "runs";
-  s.curve_label = "least-squares fit";
-  return s;
-}
-#endif
-
-}  // namespace
 
 int converge_command(const ConvergeOptions& opt) {
   RunConfig base;
@@ -113,10 +65,9 @@ int converge_command(const ConvergeOptions& opt) {
   std::vector<std::uint8_t> rgba;
   std::string err;
   render::ViewSettings view;
-  view.color_by = "log10_e";
-  view.point_px = 6.f;
+  view.point_px = 7.f;  // the runs' dots
   const std::string png = (dir / "converge.png").string();
-  if (!render_snapshot_rgba(plot_of(r), view, width, height, &rgba, &err) || !write_png(png, width, height, rgba, &err, &manifest)) {
+  if (!render_snapshot_rgba(convergence_plot(r), view, width, height, &rgba, &err) || !write_png(png, width, height, rgba, &err, &manifest)) {
     std::fprintf(stderr, "sph: %s: %s\n", png.c_str(), err.c_str());
     return kIoError;
   }

@@ -39,11 +39,13 @@ void add_outlines(FrameBuild& f, const sph::Snapshot& snap) {
   };
 
   std::vector<PixelOutline> lines;
+  std::vector<std::string> drawn_as_lines;  // labels with a line; the others are markers only (legend dots)
   lines.reserve(snap.outlines.size());
   for (const sph::Outline& o : snap.outlines) {
     const std::size_t n = std::min(o.x.size(), o.y.size());
     if (n == 0) continue;
     PixelOutline p{{}, colour_of(o.label)};
+    if (n > 1) drawn_as_lines.push_back(o.label);
     p.xy.reserve(2 * n);
     for (std::size_t i = 0; i < n; ++i) {
       float px = NAN, py = NAN;
@@ -69,8 +71,14 @@ void add_outlines(FrameBuild& f, const sph::Snapshot& snap) {
 
   std::vector<LegendEntry> rows;
   for (std::size_t k = 0; k < labels.size() && k < kColours; ++k)
-    if (!labels[k].empty()) rows.push_back({labels[k], false, palette::kOutlines[k], w, palette::kOutlineHalo});
-  add_legend(f, L.plot, rows);
+    if (!labels[k].empty()) {
+      const bool dot = std::find(drawn_as_lines.begin(), drawn_as_lines.end(), labels[k]) == drawn_as_lines.end();
+      rows.push_back({labels[k], dot, palette::kOutlines[k], dot ? 1.5f * w + 1.f : w, palette::kOutlineHalo});
+    }
+  std::vector<float> dots;  // the legend keeps off the markers (a chart's data points)
+  for (const PixelOutline& p : lines)
+    if (p.xy.size() == 2) dots.insert(dots.end(), p.xy.begin(), p.xy.end());
+  add_legend(f, L.plot, rows, dots, 4.f);
 }
 
 }  // namespace sph::render

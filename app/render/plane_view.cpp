@@ -1,5 +1,7 @@
 #include "plane_view.h"
 
+#include <algorithm>
+
 #include "axes.h"
 #include "outline_overlay.h"
 #include "tree_overlay.h"
@@ -14,13 +16,20 @@ void compose_plane(FrameBuild& f, const sph::Snapshot& snap, const ViewSettings&
   const int s = L.text_scale;
   const float lh = f.text.line_height(s);
   const Bounds b = view_bounds(snap);
-  const float aspect = (b[1] - b[0]) / (b[3] - b[2]);
+  // A chart (a snapshot with its own title: the convergence and work-precision plots) fills the frame with
+  // its bounds; space keeps one scale on both axes (a chart at that was a narrow strip with no room for
+  // its legend).
+  const bool chart = !snap.title.empty();
+  const float aspect = chart ? L.content.w / std::max(1.f, L.content.h) : (b[1] - b[0]) / (b[3] - b[2]);
+  const auto visible = [&](const PixelRect& r) {
+    return chart ? WorldRect{b[0], b[1], b[2], b[3]} : visible_rect_2d(b, view.camera2d, r.w, r.h);
+  };
 
   // Two passes: the y labels' width depends on the visible range, which depends on the box.
   PixelRect box = axes_box(L.content, y_label_width(f.text, b[2], b[3], L.content.h, s), s, lh, aspect);
-  WorldRect w = visible_rect_2d(b, view.camera2d, box.w, box.h);
+  WorldRect w = visible(box);
   box = axes_box(L.content, y_label_width(f.text, w.y0, w.y1, box.h, s), s, lh, aspect);
-  w = visible_rect_2d(b, view.camera2d, box.w, box.h);
+  w = visible(box);
   L.plot = box;
   f.camera = camera_2d(w);
   L.plot_to_clip = f.camera.proj * f.camera.view;
