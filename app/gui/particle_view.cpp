@@ -17,7 +17,8 @@ bool same_view(const render::ViewSettings& a, const render::ViewSettings& b) {
   const auto& o = a.orbit;
   const auto& q = b.orbit;
   return a.color_by == b.color_by && a.cmap == b.cmap && a.auto_range == b.auto_range && a.percentile_lo == b.percentile_lo &&
-         a.percentile_hi == b.percentile_hi && a.log_scale == b.log_scale && a.auto_log == b.auto_log && a.cut_axis == b.cut_axis && a.cut_at == b.cut_at && a.show_trails == b.show_trails && a.show_tree == b.show_tree &&
+         a.percentile_hi == b.percentile_hi && a.log_scale == b.log_scale && a.auto_log == b.auto_log &&
+         a.cut_axis == b.cut_axis && a.cut_at == b.cut_at && a.show_trails == b.show_trails && a.show_tree == b.show_tree &&
          a.range_min == b.range_min && a.range_max == b.range_max && c.fit == d.fit && c.center_x == d.center_x &&
          c.center_y == d.center_y && c.zoom == d.zoom && o.yaw_deg == q.yaw_deg && o.pitch_deg == q.pitch_deg &&
          o.distance == q.distance && o.zoom == q.zoom && o.fov_deg == q.fov_deg && o.up_axis == q.up_axis &&

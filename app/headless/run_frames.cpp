@@ -11,7 +11,6 @@
 #include "profile_view.h"
 #include "run_output.h"
 #include "sph/memory_budget.h"
-#include "sph/param_table.h"
 #include "sph/suggest.h"
 #include "sph/world.h"
 #include "value_parsers.h"
@@ -58,15 +57,8 @@ std::unique_ptr<FrameRecorder> make_recorder(const RunOptions& opt) {
   set_range(opt.range, fo);
   fo.log_scale = opt.log_scale;
   fo.auto_log = !opt.linear;
-  if (!opt.cut.empty()) {  // AXIS=VALUE
-    double at = 0.0;
-    const std::string axes = "xyz";
-    if (opt.cut.size() < 3 || opt.cut[1] != '=' || axes.find(opt.cut[0]) == std::string::npos ||
-        !parse_number(opt.cut.substr(2), at))
-      throw ConfigError("--cut " + opt.cut + ": expected AXIS=VALUE with AXIS x, y or z, e.g. z=0");
-    fo.cut_axis = static_cast<int>(axes.find(opt.cut[0]));
-    fo.cut_at = static_cast<float>(at);
-  }
+  if (!opt.cut.empty() && !parse_cut(opt.cut, &fo.cut_axis, &fo.cut_at))
+    throw ConfigError("--cut " + opt.cut + ": expected AXIS=VALUE with AXIS x, y or z, e.g. z=0");
   fo.profile_axis = opt.profile_axis;
   fo.panels = split_names(opt.panels);
   fo.video = opt.video;

@@ -30,6 +30,14 @@ bool parse_range(const std::string& text, float* lo, float* hi) {
   return parse_float(text, 0, colon, lo) && parse_float(text, colon + 1, text.size(), hi);
 }
 
+bool parse_cut(const std::string& text, int* axis, float* at) {
+  static const std::string kAxes = "xyz";
+  if (text.size() < 3 || text[1] != '=' || kAxes.find(text[0]) == std::string::npos) return false;
+  if (!parse_float(text, 2, text.size(), at)) return false;
+  *axis = static_cast<int>(kAxes.find(text[0]));
+  return true;
+}
+
 double frame_memory_bytes(int width, int height) {
   return 24.0 * static_cast<double>(width) * static_cast<double>(height);
 }

@@ -7,6 +7,8 @@ namespace sph::cli {
 
 /// "LO:HI" -> lo, hi: two finite numbers (float range) and nothing else; false otherwise.
 bool parse_range(const std::string& text, float* lo, float* hi);
+/// "AXIS=VALUE" (--cut) -> axis 0, 1, 2 for x, y, z and a finite float value; false otherwise.
+bool parse_cut(const std::string& text, int* axis, float* at);
 /// Memory one frame of width x height pixels takes while it is rendered and written [bytes]: the
 /// off-screen colour and depth buffers, the read-back RGBA, the buffer handed to the PNG thread, the RGB
 /// copy and the PNG (about 24 bytes a pixel).

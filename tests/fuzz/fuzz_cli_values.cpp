@@ -1,4 +1,4 @@
-// Fuzzes the command line's value parsers: --size WIDTHxHEIGHT, --range LO:HI (and pLO:HI) and the
+// Fuzzes the command line's value parsers: --size WIDTHxHEIGHT, --range LO:HI (and pLO:HI), --cut AXIS=VALUE and the
 // comma-separated --values list. Accepted values must be what they claim (positive sizes that print and
 // parse back the same, finite ranges and numbers); refused ones must be refused cleanly.
 #include <cmath>
@@ -23,6 +23,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   float lo = 0, hi = 0;
   if (sph::cli::parse_range(text, &lo, &hi) && !(std::isfinite(lo) && std::isfinite(hi))) std::abort();
+  int axis = -1;
+  float at = 0;
+  if (sph::cli::parse_cut(text, &axis, &at) && !(axis >= 0 && axis <= 2 && std::isfinite(at))) std::abort();
   try {
     for (double v : sph::cli::parse_number_list(text, "--values"))
       if (!std::isfinite(v)) std::abort();

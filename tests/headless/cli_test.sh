@@ -146,6 +146,7 @@ if "$sph" run --help | grep -q -- "--frames"; then
   ok "tree overlay frame" test -s "$work/tp/frame_00001.png"
   bad cut_axis 2 "--cut w=0: expected AXIS=VALUE" run dust_sphere --set scene.n=100 --frames "$work/cw" --cut w=0
   bad cut_value 2 "--cut z=a" run dust_sphere --set scene.n=100 --frames "$work/cv" --cut z=a
+  bad cut_beyond_float 2 "--cut z=1e300" run dust_sphere --set scene.n=100 --frames "$work/cf" --cut z=1e300
   env -u DISPLAY "$sph" run dust_sphere --set scene.n=300 --until 0 --frames "$work/cut" --cut z=0 --size 640x480 \
     > /dev/null
   check "a 3D cutaway frame" 0 $?

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 #include "sph/world.h"
 
@@ -30,9 +29,7 @@ void TrailLog::record(const World& w) {
   }
   const Particles& p = w.particles();
   const std::size_t n = p.size();
-  std::vector<std::size_t> order(n);  // storage order -> id order (the snapshot's)
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return p.id[a] < p.id[b]; });
+  const std::vector<std::uint32_t>& order = w.by_id();  // id order (the snapshot's) -> storage index
   const std::string& scene = w.config().scene->name;
   if (n != x_.size() || scene != scene_ || w.time() < t_last_) {  // a new run: start again
     clear();
