@@ -63,9 +63,10 @@ TEST(CheckpointFile, EveryFlippedByteIsRefused) {
 }
 
 TEST(CheckpointFile, OtherVersionEmptyAndForeignFilesAreNamed) {
-  std::string v2 = encode_checkpoint(sample());
-  v2[8] = 2;  // the version follows the 8-byte magic
-  EXPECT_NE(refusal(v2).find("version 2"), std::string::npos) << refusal(v2);
+  std::string other = encode_checkpoint(sample());
+  other[8] = static_cast<char>(kCheckpointVersion + 1);  // the version follows the 8-byte magic
+  const std::string named = "version " + std::to_string(kCheckpointVersion + 1);
+  EXPECT_NE(refusal(other).find(named), std::string::npos) << refusal(other);
   EXPECT_NE(refusal("").find("empty"), std::string::npos);
   EXPECT_NE(refusal("id,x,y,z\n1,2,3,4\n").find("not a checkpoint"), std::string::npos);
   EXPECT_NE(refusal(encode_checkpoint(sample()) + "x"), "");  // trailing bytes

@@ -18,7 +18,7 @@ struct CheckpointError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-inline constexpr std::uint32_t kCheckpointVersion = 1;
+inline constexpr std::uint32_t kCheckpointVersion = 2;  // 2: individual time steps, updates
 
 struct Checkpoint {
   std::string config_json;  ///< RunConfig::to_json() of the run

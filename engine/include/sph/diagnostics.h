@@ -25,6 +25,7 @@ struct Diagnostics {
   std::size_t h_not_converged = 0;
   double neighbours_mean = 0.0;
   std::size_t correction_fallbacks = 0;  ///< particles whose gradient correction fell back to L = I
+  std::int64_t updates = 0;  ///< particle evaluations so far: with individual time steps, the active ones
 };
 
 /// CSV header line and row for diagnostics.csv.

@@ -51,6 +51,9 @@ struct TimeParams {
   double cfl = 0.3;      ///< Courant factor: dt = cfl min(h/v_sig, sqrt(h/|a|), stage limits) [dimensionless]
   double t_end = 0.2;    ///< end time of a run [time]
   double dt_out = 0.05;  ///< interval between particle outputs [time]
+  /// Individual time steps: each particle on a power-of-two level of the largest step, at most this
+  /// many levels (leapfrog with an adaptive step); 1 = one global step.
+  int levels = 1;
   bool operator==(const TimeParams&) const = default;
 };
 

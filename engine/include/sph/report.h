@@ -52,6 +52,7 @@ class Report {
     double since;                        ///< time between the last two evaluations (0 when unknown)
     double t, dt;                        ///< the time and the last step's dt
     std::int64_t step, evaluations;
+    std::int64_t updates;  ///< particle evaluations so far (every fluid particle, or the active ones)
   };
   explicit Report(const Inputs& in) : in_(in) {}
 

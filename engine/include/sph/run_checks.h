@@ -44,6 +44,8 @@ class RunChecks {
   /// The blow-up guards measure from the next step on (new parameters or a push may change dt and the
   /// energies legitimately).
   void restart_guards() { dt_first_ = 0.0; energy_scale_ = -1.0; }
+  /// Whether check_energy has taken its reference energy since the start or the last restart_guards().
+  bool energy_armed() const { return energy_scale_ >= 0.0; }
 
   /// Throws when the step's dt is not finite and positive, or when the adaptive dt (dt_free; checked
   /// when `adaptive`) collapsed far below the first step's.
@@ -69,6 +71,9 @@ class RunChecks {
   /// At the start: warns when a fixed time.dt is too large for the pericentre passage of a bound pair of
   /// point masses (h = 0, a few bodies) to keep the scene within its energy bound (run_checks_timestep.cpp).
   void check_pericentres(const RunConfig& cfg, const Particles& p);
+  /// Individual time steps: warns (kind "timestep") when `too_long` particles wanted a step shorter than
+  /// the block's shortest level (they took that level) since the last call.
+  void check_levels(std::int64_t too_long, int levels, std::int64_t step, double t);
   /// A gravity scene whose energy drifted beyond its bound: the run's result is not to be trusted (the
   /// headless program exits non-zero after writing it).
   bool energy_beyond_bound(const RunConfig& cfg) const {

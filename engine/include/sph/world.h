@@ -18,6 +18,7 @@
 
 namespace sph {
 
+class BlockSteps;
 class Pipeline;
 class TeamChooser;
 struct EvalStats;
@@ -124,6 +125,10 @@ class World {
   void check_step();
   PhaseSpace phase_space();
   void advance(double dt_max);  ///< the step itself (step() chooses its team)
+  /// The step with individual time steps (time.levels > 1): one sub-step of the block (block_steps.h).
+  void advance_block(double dt_max);
+  /// Every fluid particle's wanted dt: cfl min(its stage limits, sqrt(h/|a|)) [time].
+  void wanted_steps(std::vector<double>& want);
   /// The particle arrays of a checkpoint, checked against this world (world_state.cpp).
   void save_particles(ByteWriter& w) const;
   Particles read_particles(ByteReader& r, std::size_t bytes) const;
@@ -138,6 +143,10 @@ class World {
   std::unique_ptr<Pipeline> pipeline_;
   FieldSet start_shared_;  ///< copied to the ghosts before the stages run (mass, h, evolved state)
   std::unique_ptr<Integrator> integrator_;
+  std::unique_ptr<BlockSteps> block_;  ///< individual time steps (time.levels > 1), else null
+  /// The block whose active particles the current evaluation is for (individual time steps), else
+  /// null: every particle.
+  BlockSteps* active_ = nullptr;
   std::unique_ptr<Reference> reference_;
   std::vector<RefColumn> ref_columns_;
   std::unique_ptr<EvalStats> stats_;
@@ -149,6 +158,7 @@ class World {
   double since_ = 0.0;         ///< time from the last evaluation to the current one (0 when unknown)
   double t_ = 0.0, dt_last_ = 0.0;
   std::int64_t step_ = 0, evaluations_ = 0;
+  std::int64_t updates_ = 0;  ///< particle evaluations: the fluid, or the active particles of a sub-step
   std::unique_ptr<TeamChooser> team_;
   bool adaptive_threads_ = true;
   int last_team_ = 1;

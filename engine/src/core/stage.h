@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -42,6 +43,17 @@ struct StageContext {
   double wall_strength;                ///< the scene's Lennard-Jones D [length^2/time^2]
   EvalStats& stats;
   double since = 0.0;                  ///< time since the last evaluation [time]; 0 when unknown
+  /// With individual time steps (time.levels > 1): the fluid particles whose step ends now, in increasing
+  /// index; the others keep their rates, and a stage may skip them. Null: every particle.
+  const std::vector<std::uint32_t>* active = nullptr;
+  /// The rows a per-particle loop over the first n fluid particles visits: row(k) for k < rows(n).
+  std::size_t rows(std::size_t n) const { return active ? active->size() : n; }
+  std::size_t row(std::size_t k) const { return active ? (*active)[k] : k; }
+  /// With individual time steps: the particles whose density the active ones read (they and their
+  /// neighbours, in increasing index), so that no force sees a density older than the step. Null: all.
+  const std::vector<std::uint32_t>* summed = nullptr;
+  std::size_t summed_rows(std::size_t n) const { return summed ? summed->size() : n; }
+  std::size_t summed_row(std::size_t k) const { return summed ? (*summed)[k] : k; }
   /// Wall particles take part in the SPH sums (dummy walls) or only exert their own force (Lennard-Jones).
   bool walls_in_sums() const { return prm.physics.walls == WallType::Dummy; }
 };
@@ -94,6 +106,13 @@ class Stage {
   virtual bool take_resampled(Particles&) { return false; }
   /// Largest stable dt from this stage, before the Courant factor [time].
   virtual double dt_limit(const StageContext&) const { return kNoLimit; }
+  /// The same limit per fluid particle (individual time steps): dt[i] = min(dt[i], limit of i) [time].
+  /// By default every particle takes the stage's global limit.
+  virtual void dt_limits(const StageContext& c, std::span<double> dt) const {
+    const double g = dt_limit(c);
+    if (g < kNoLimit)
+      for (double& d : dt) d = d < g ? d : g;
+  }
   /// Potential energy of a conservative force [energy].
   virtual double potential(const StageContext&) const { return 0.0; }
   /// Internal energy the stage stores (an EOS) [energy].

@@ -19,7 +19,7 @@ void field(std::string& s, const std::string& v) {
 
 std::string diagnostics_csv_header() {
   return "step,t,dt,E_kin,E_int,E_pot,E_tot,px,py,pz,Lx,Ly,Lz,v_max,h_iter_mean,h_iter_max,h_not_converged,"
-         "neighbours_mean,correction_fallbacks";
+         "neighbours_mean,correction_fallbacks,updates";
 }
 
 std::string diagnostics_csv_row(const Diagnostics& d) {
@@ -31,6 +31,7 @@ std::string diagnostics_csv_row(const Diagnostics& d) {
   field(s, std::to_string(d.h_not_converged));
   field(s, fmt(d.neighbours_mean));
   field(s, std::to_string(d.correction_fallbacks));
+  field(s, std::to_string(d.updates));
   return s;
 }
 

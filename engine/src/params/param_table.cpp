@@ -212,6 +212,10 @@ void add_time(std::vector<ParamInfo>& t) {
   t.push_back(real({"time.cfl", "dimensionless", "Courant factor: dt = cfl min(h/v_sig, sqrt(h/|a|), stage limits)",
                     "cfl"},
                    [](Params& p) -> double& { return p.time.cfl; }, 1e-4, 2.0));
+  t.push_back(integer({"time.levels", "levels",
+                       "individual time steps: each particle steps with dt_max / 2^k, k < levels (leapfrog, "
+                       "adaptive dt); 1 = one global step"},
+                      [](Params& p) -> int& { return p.time.levels; }, 1, 30));
   t.push_back(real({"time.t_end", "time", "end time of a run", "t_end"},
                    [](Params& p) -> double& { return p.time.t_end; }, 0.0, 1e9));
   t.push_back(real({"time.dt_out", "time", "interval between particle outputs; 0 = end only", "dt_out"},

@@ -214,8 +214,8 @@ class DensitySummation final : public Stage {
     {
     Candidates cand;  // this thread's
 #pragma omp for schedule(static)  // the same block per thread in every loop (core/parallel.h)
-    for (std::size_t i = 0; i < n; ++i)
-      if (!hs.particle(i, cand, bisections)) ++overflow;
+    for (std::size_t k = 0; k < c.summed_rows(n); ++k)  // individual time steps: active and their neighbours
+      if (!hs.particle(c.summed_row(k), cand, bisections)) ++overflow;
     }
     if (overflow > 0) return false;
     record_stats(c, bisections);

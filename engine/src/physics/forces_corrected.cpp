@@ -120,11 +120,12 @@ class ForcesCorrected final : public Stage {
     const StressLoop loop(c, dim_, stress_);
     const std::size_t n = c.p.fluid();
 #pragma omp parallel for schedule(static) if (c.p.size() >= kParallelMin)
-    for (std::size_t i = 0; i < n; ++i) loop.particle(i);
+    for (std::size_t k = 0; k < c.rows(n); ++k) loop.particle(c.row(k));
     return true;
   }
 
   double dt_limit(const StageContext& c) const override { return courant_limit(c.p); }
+  void dt_limits(const StageContext& c, std::span<double> dt) const override { courant_limits(c.p, dt); }
 
  private:
   bool stress_;

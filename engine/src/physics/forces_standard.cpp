@@ -91,6 +91,7 @@ class ForcesStandard final : public Stage {
     return true;
   }
   double dt_limit(const StageContext& c) const override { return courant_limit(c.p); }
+  void dt_limits(const StageContext& c, std::span<double> dt) const override { courant_limits(c.p, dt); }
 
  private:
   bool grad_h_, energy_, cont_;

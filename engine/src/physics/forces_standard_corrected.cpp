@@ -74,6 +74,7 @@ class ForcesStandardCorrected final : public Stage {
     return true;
   }
   double dt_limit(const StageContext& c) const override { return courant_limit(c.p); }
+  void dt_limits(const StageContext& c, std::span<double> dt) const override { courant_limits(c.p, dt); }
 
  private:
   int dim_;

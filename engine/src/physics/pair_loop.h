@@ -26,7 +26,8 @@ void pair_loop(StageContext& c, const Pairs& pairs, const double* R2, bool skip_
   {
   typename Pairs::Block b;  // this thread's pairs of i
 #pragma omp for schedule(static)  // the same block per thread in every loop (core/parallel.h)
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t row = 0; row < c.rows(n); ++row) {  // the active particles (individual time steps)
+    const std::size_t i = c.row(row);
     const auto a = pairs.self(i);
     const std::size_t np = gather_pairs<Pairs::kColumns, Pairs::kThreeD>(p, R2, i, c.nl.of(i), skip_walls, b);
     pairs.terms(a, b, np);
@@ -35,7 +36,7 @@ void pair_loop(StageContext& c, const Pairs& pairs, const double* R2, bool skip_
     if constexpr (Cont) sum_nb += t.count;
   }
   }
-  if constexpr (Cont) ContinuityOutput::finish(c, sum_nb, n);
+  if constexpr (Cont) ContinuityOutput::finish(c, sum_nb, c.rows(n));
 }
 
 }  // namespace sph

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <span>
 
 #include "core/parallel.h"
 #include "core/stages.h"
@@ -59,6 +60,21 @@ class SelfGravity final : public Stage {
       if (a2 > 0.0) t2 = std::min(t2, eps / std::sqrt(a2));
     }
     return t2 < 1e299 ? std::sqrt(t2) : kNoLimit;
+  }
+
+  // the same limits per particle (individual time steps)
+  void dt_limits(const StageContext& c, std::span<double> dt) const override {
+    const Particles& p = c.p;
+    const std::size_t n = std::min({p.fluid(), out_.t2_pair.size(), dt.size()});
+    const bool plummer = c.prm.gravity.softening == Softening::Plummer && c.prm.gravity.eps > 0.0;
+    const double eps = c.prm.gravity.eps;
+#pragma omp parallel for if (n >= kParallelMin)
+    for (std::size_t i = 0; i < n; ++i) {
+      double t2 = out_.t2_pair[i];
+      const double a2 = p.a[0][i] * p.a[0][i] + p.a[1][i] * p.a[1][i] + p.a[2][i] * p.a[2][i];
+      if (plummer && a2 > 0.0) t2 = std::min(t2, eps / std::sqrt(a2));
+      if (t2 < 1e299) dt[i] = std::min(dt[i], std::sqrt(t2));
+    }
   }
 
   // the last evaluation's accelerations, potentials and pair times (dt_limit reads them) and positions

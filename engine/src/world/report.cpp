@@ -51,6 +51,7 @@ Diagnostics Report::diagnostics() const {
   d.h_not_converged = ds.not_converged;
   d.neighbours_mean = ds.mean_neighbours;
   d.correction_fallbacks = in_.stats.correction_fallbacks;
+  d.updates = in_.updates;
   return d;
 }
 

@@ -13,6 +13,7 @@
 #include "core/stage.h"
 #include "core/stages.h"
 #include "core/team_size.h"
+#include "integrators/block_steps.h"
 
 namespace sph {
 namespace {
@@ -34,6 +35,7 @@ World::World(const RunConfig& cfg)
     : cfg_(cfg), kernel_(cfg.params.kernel.type, cfg.scene->dim), stats_(std::make_unique<EvalStats>()),
       team_(std::make_unique<TeamChooser>()) {
   check_physics(*cfg_.scene, cfg_.params.physics);
+  if (const std::string why = block_steps_refusal(cfg_.params); !why.empty()) throw ConfigError(why);
   pipeline_ = std::make_unique<Pipeline>(cfg_.params, cfg_.scene->dim);
   SceneSetup setup = cfg_.scene->build(cfg_.params, cfg_.values);
   p_ = std::move(setup.particles);
@@ -48,6 +50,7 @@ World::World(const RunConfig& cfg)
   start_shared_ = FieldSet{}.add(Field::Mass).add(Field::H);
   for (const EvolvedPair& e : pipeline_->evolved()) start_shared_.add(e.first);
   integrator_ = make_integrator(cfg_.params.time.integrator);
+  if (cfg_.params.time.levels > 1) block_ = std::make_unique<BlockSteps>(cfg_.params.time.levels);
   if (cfg_.scene->reference) {
     reference_ = cfg_.scene->reference(cfg_.params, cfg_.values);
     if (reference_) ref_columns_ = reference_->columns();
@@ -87,6 +90,7 @@ World::~World() = default;
 
 void World::set_params(const Params& p) {
   const Params old = cfg_.params;
+  if (const std::string why = block_steps_refusal(p); !why.empty()) throw ConfigError(why);
   if (p.physics != old.physics || gravity_grad_h(p) != gravity_grad_h(old)) {
     check_physics(*cfg_.scene, p.physics);  // throws before anything changes
     pipeline_ = std::make_unique<Pipeline>(p, p_.dim());
@@ -99,6 +103,9 @@ void World::set_params(const Params& p) {
   cfg_.params = p;
   if (p.kernel.type != old.kernel.type) kernel_ = Kernel(p.kernel.type, p_.dim());
   if (p.time.integrator != old.time.integrator) integrator_ = make_integrator(p.time.integrator);
+  // a block of individual steps ends where it stands: the next step starts one from the new rates
+  if (p.time.levels != old.time.levels) block_ = p.time.levels > 1 ? std::make_unique<BlockSteps>(p.time.levels) : nullptr;
+  if (block_) block_->synchronise();
   current_ = false;  // rates depend on the parameters: re-evaluate before the next step
   rates_known_ = false;
   lists_.invalidate();  // the kernel, h or the boundaries may have changed
@@ -144,6 +151,7 @@ void World::step(double dt_max) {
 
 void World::advance(double dt_max) {
   if (step_ > 0 && step_ % kReorderEvery == 0) reorder();
+  if (block_) return advance_block(dt_max);
   const double dt_free = next_dt();
   double dt = std::min(dt_free, dt_max);
   checks_.check_dt(dt, dt_free, cfg_.params.time.dt <= 0.0, p_, step_, t_);
@@ -162,7 +170,9 @@ void World::check_step() {
   RunChecks::check_finite(p_, step_, t_);
   checks_.check_walls(p_, cfg_.params, step_, t_);
   checks_.check_h_solve(stats_->density, step_, t_);
-  checks_.check_energy(cfg_, [this] { return report().diagnostics(); }, p_, step_, t_);
+  // inside a block of individual steps the state is part predicted: its energy is checked at the block's end
+  if (!block_ || block_->synchronised())
+    checks_.check_energy(cfg_, [this] { return report().diagnostics(); }, p_, step_, t_);
   checks_.check_reference(reference_.get(), step_, t_);
 }
 
@@ -181,7 +191,7 @@ void World::bound() { checks_.tally(apply_boundaries(domain_, p_)); }
 Report World::report() const {
   return Report(Report::Inputs{cfg_, kernel_, p_, by_id_, domain_, *pipeline_, *stats_, lists_, reference_.get(),
                                ref_columns_, timings_, push_, eta(), spacing_, wall_strength_, since_, t_, dt_last_,
-                               step_, evaluations_});
+                               step_, evaluations_, updates_});
 }
 
 void World::after_step() {

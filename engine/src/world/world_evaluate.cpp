@@ -7,6 +7,7 @@
 #include "core/parallel.h"
 #include "core/pipeline.h"
 #include "core/stage.h"
+#include "integrators/block_steps.h"
 #include "sph/world.h"
 
 namespace sph {
@@ -30,7 +31,8 @@ StageContext World::context() const {
   // Stages get the particles mutable; const callers (potentials, limits) only read them.
   const NeighbourList& lists = lists_.lists(pipeline_->exact_lists());
   return StageContext{cfg_.params, kernel_, domain_, const_cast<Particles&>(p_), lists, lists_.h_limit(),
-                      eta(), spacing_, wall_strength_, *stats_, since_};
+                      eta(), spacing_, wall_strength_, *stats_, since_,
+                      active_ ? &active_->active() : nullptr, active_ ? &active_->summed() : nullptr};
 }
 
 void World::prepare_neighbours() {
@@ -56,6 +58,7 @@ void World::evaluate(double t_eval) {
   for (int attempt = 0;; ++attempt) {
     auto t0 = std::chrono::steady_clock::now();
     if (pipeline_->uses_neighbours()) prepare_neighbours();  // pure N-body: no lists at all
+    if (active_) active_->mark_summed(p_, lists_.lists(pipeline_->exact_lists()));
     timings_[0].seconds += since(t0);
     ++timings_[0].calls;
     if (!pipeline_->sets_acceleration())
@@ -80,6 +83,7 @@ void World::evaluate(double t_eval) {
       throw DivergedError(-1, step_, t_, "h", "the smoothing length outgrows its neighbour lists on every rebuild");
   }
   ++evaluations_;
+  updates_ += static_cast<std::int64_t>(active_ ? active_->active().size() : p_.fluid());
   t_last_eval_ = t_eval;
   rates_known_ = true;
 }
@@ -89,6 +93,12 @@ double World::next_dt() {
   // The last evaluation's rates set dt (for RK4 and the predictor-corrector that is a stage within the
   // last step): evaluating again just for dt would double their cost.
   if (!rates_known_) { evaluate(); current_ = true; }
+  if (block_) {  // individual time steps: to the next end of a particle's step, or a new block's length
+    if (!block_->synchronised()) return block_->next_dt();
+    std::vector<double> want;
+    wanted_steps(want);
+    return block_->block_length(want);
+  }
   const StageContext ctx = context();
   double dt = Stage::kNoLimit;
   for (const auto& s : pipeline_->stages()) dt = std::min(dt, s->dt_limit(ctx));

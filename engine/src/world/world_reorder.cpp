@@ -5,6 +5,7 @@
 #include "core/pipeline.h"
 #include "core/spatial_order.h"
 #include "core/stage.h"
+#include "integrators/block_steps.h"
 #include "sph/world.h"
 
 namespace sph {
@@ -14,6 +15,7 @@ void World::adopt(Particles&& fresh) {
   p_.add_fields(pipeline_->fields());
   apply_boundaries(domain_, p_);
   integrator_->reset();  // its history was per particle
+  if (block_) block_->synchronise();
   lists_.clear();
   rates_known_ = false;
   t_last_eval_ = -1.0;
@@ -46,6 +48,7 @@ void World::reorder() {
   }
   p_.permute(order);
   integrator_->permute(order);
+  if (block_) block_->permute(order);
   lists_.permute(order);  // the lists stay valid for the current state
   by_id_.resize(n);
   for (std::size_t i = 0; i < n; ++i) by_id_[i] = static_cast<std::uint32_t>(i);

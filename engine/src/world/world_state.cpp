@@ -7,6 +7,7 @@
 
 #include "core/pipeline.h"
 #include "core/stage.h"
+#include "integrators/block_steps.h"
 #include "io/byte_stream.h"
 #include "sph/checkpoint.h"
 #include "sph/world.h"
@@ -14,7 +15,7 @@
 namespace sph {
 namespace {
 
-constexpr std::uint32_t kStateTag = 0x53575331;  // "SWS1": the layout below
+constexpr std::uint32_t kStateTag = 0x53575332;  // "SWS2": the layout below
 
 void put_arrays(ByteWriter& w, const std::vector<std::vector<double>>& a) {
   w.put<std::uint64_t>(a.size());
@@ -68,14 +69,14 @@ std::string World::save_state() const {
   // clocks, the checks' state and counters
   w.put(t_last_eval_); w.put(since_); w.put(t_); w.put(dt_last_);
   checks_.save(w);
-  w.put(step_); w.put(evaluations_);
+  w.put(step_); w.put(evaluations_); w.put(updates_);
   w.put_bool(current_); w.put_bool(rates_known_);
   const DensityStats& d = stats_->density;
   w.put(d.mean_iterations); w.put<std::int32_t>(d.max_iterations); w.put<std::uint64_t>(d.not_converged);
   w.put(d.first_not_converged); w.put<std::uint64_t>(d.bisections); w.put(d.mean_neighbours);
   w.put<std::uint64_t>(stats_->correction_fallbacks);
   // integrator history and the stages' own state
-  put_arrays(w, integrator_->history());
+  put_arrays(w, block_ ? block_->history() : integrator_->history());
   w.put_vec(reference_ ? reference_->saved_state() : std::vector<double>{});
   w.put<std::uint64_t>(pipeline_->stages().size());
   for (const auto& s : pipeline_->stages()) {
@@ -138,7 +139,7 @@ void World::restore_state(const std::string& bytes, const std::string& what) {
   double clocks[4];
   for (double& c : clocks) c = r.get<double>();
   checks_.restore(r);
-  const auto step = r.get<std::int64_t>(), evaluations = r.get<std::int64_t>();
+  const auto step = r.get<std::int64_t>(), evaluations = r.get<std::int64_t>(), updates = r.get<std::int64_t>();
   const bool current = r.get_bool(), rates_known = r.get_bool();
   EvalStats stats;
   stats.density.mean_iterations = r.get<double>();
@@ -154,6 +155,7 @@ void World::restore_state(const std::string& bytes, const std::string& what) {
   t_last_eval_ = clocks[0]; since_ = clocks[1]; t_ = clocks[2]; dt_last_ = clocks[3];
   step_ = step;
   evaluations_ = evaluations;
+  updates_ = updates;
   current_ = current;
   rates_known_ = rates_known;
   *stats_ = stats;
@@ -173,7 +175,8 @@ void World::restore_stages(ByteReader& r) {
     stage_states.push_back(get_arrays(r));
   }
   if (r.get<std::uint32_t>() != kStateTag || r.left() != 0) r.fail("the world state does not end where it should");
-  if (!integrator_->set_history(history)) r.fail("the integrator history does not fit this integrator");
+  if (block_ ? !block_->set_history(history) : !integrator_->set_history(history))
+    r.fail("the integrator history does not fit this integrator");
   if (reference_ ? !reference_->restore_state(reference_state) : !reference_state.empty())
     r.fail("the reference's state does not fit this scene's reference");
   for (std::size_t k = 0; k < stage_states.size(); ++k)
