@@ -37,6 +37,7 @@ enum class Field : std::uint8_t {
   CurlV,       ///< |curl v| = |(1/(Omega rho)) sum_b m_b v_ab x grad W_ab(h_a)| [1/time]
   ViscAlpha,   ///< artificial viscosity alpha of the particle (visc.switch) [dimensionless]
   GravZeta,    ///< zeta/Omega of kernel-softened gravity's grad-h term (Price & Monaghan 2007) [length^(d-1)]
+  StepLevel,   ///< individual time steps: the level k of the particle's step, dt = block / 2^k [dimensionless]
   Count
 };
 
@@ -142,6 +143,7 @@ constexpr std::array<FieldInfo, kFieldCount> kFieldInfo{{
     {"curlv", "vorticity |curl v|", 0, true, false},
     {"alpha", "viscosity alpha (switch)", 0, true, true},
     {"zeta", "gravity grad-h term zeta/Omega", 0, false, false},
+    {"level", "time-step level k: dt = block / 2^k", 0, true, true},
 }};
 
 inline const FieldInfo& info(Field f) { return kFieldInfo[index(f)]; }

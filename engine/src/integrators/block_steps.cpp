@@ -242,6 +242,15 @@ double BlockSteps::step(PhaseSpace& s, const Particles& p, const Hooks& hooks, d
   return dt;
 }
 
+void BlockSteps::write_levels(std::vector<double>& level) const {
+  const std::size_t n = std::min(level.size(), len_.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    int k = 0;
+    for (std::int64_t l = len_[i]; l < ticks_; l *= 2) ++k;
+    level[i] = k;
+  }
+}
+
 void BlockSteps::permute(std::span<const std::uint32_t> order) {
   const std::size_t n = len_.size();
   if (n == 0) return;

@@ -57,6 +57,8 @@ class BlockSteps {
   const std::vector<std::int64_t>& lengths() const { return len_; }
   const std::vector<std::int64_t>& starts() const { return begin_; }
   const std::vector<std::int64_t>& levels() const { return level_; }
+  /// Writes each fluid particle's step level k (its step is the block / 2^k) into `level`.
+  void write_levels(std::vector<double>& level) const;
   double block_tick() const { return tau_; }
   /// The particles the current evaluation is for.
   const std::vector<std::uint32_t>& active() const { return active_; }

@@ -44,6 +44,7 @@ World::World(const RunConfig& cfg)
     throw ConfigError("the scene's values place no fluid particle (only " + std::to_string(p_.size()) +
                       " wall particles): widen the fluid or lower its spacing");
   p_.add_fields(pipeline_->fields());
+  if (cfg_.params.time.levels > 1) p_.add_fields({Field::StepLevel});
   domain_ = setup.domain;
   spacing_ = setup.spacing;
   wall_strength_ = setup.wall_strength;
@@ -105,6 +106,7 @@ void World::set_params(const Params& p) {
   if (p.time.integrator != old.time.integrator) integrator_ = make_integrator(p.time.integrator);
   // a block of individual steps ends where it stands: the next step starts one from the new rates
   if (p.time.levels != old.time.levels) block_ = p.time.levels > 1 ? std::make_unique<BlockSteps>(p.time.levels) : nullptr;
+  if (block_) p_.add_fields({Field::StepLevel});
   if (block_) block_->synchronise();
   current_ = false;  // rates depend on the parameters: re-evaluate before the next step
   rates_known_ = false;

@@ -57,6 +57,7 @@ void World::advance_block(double dt_max) {
       [this](std::vector<double>& want) { wanted_steps(want); },
       [this]() -> const NeighbourList& { return lists_.lists(pipeline_->exact_lists()); }};
   const double dt = block_->step(s, p_, hooks, dt_max);
+  block_->write_levels(p_[Field::StepLevel]);
   current_ = block_->synchronised();
   rates_known_ = true;
   bound();
