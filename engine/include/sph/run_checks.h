@@ -71,8 +71,8 @@ class RunChecks {
   /// At the start: warns when a fixed time.dt is too large for the pericentre passage of a bound pair of
   /// point masses (h = 0, a few bodies) to keep the scene within its energy bound (run_checks_timestep.cpp).
   void check_pericentres(const RunConfig& cfg, const Particles& p);
-  /// Individual time steps: warns (kind "timestep") when `too_long` particles wanted a step shorter than
-  /// the block's shortest level (they took that level) since the last call.
+  /// Individual time steps: warns (kind "timestep") when `too_long` particle steps took the block's
+  /// shortest level though they wanted less than half of it, since the last call.
   void check_levels(std::int64_t too_long, int levels, std::int64_t step, double t);
   /// A gravity scene whose energy drifted beyond its bound: the run's result is not to be trusted (the
   /// headless program exits non-zero after writing it).

@@ -43,6 +43,9 @@ std::int64_t shortest_near(const Particles& p, const NeighbourList& nl, std::siz
   return m;
 }
 
+/// A step more than this many times the wanted dt is reported (a factor the Courant factor's margin takes).
+constexpr double kTooLong = 2.0;
+
 /// Neighbours differ by at most two levels: a step at most four times the shortest near it.
 constexpr std::int64_t kLimiter = 4;
 
@@ -96,7 +99,7 @@ void BlockSteps::choose_levels(const Particles& p, const NeighbourList& nl, cons
     const std::size_t i = active_[k];
     std::int64_t len = ticks_;
     while (len > 1 && static_cast<double>(len) * tau_ > want[i]) len >>= 1;
-    if (tau_ > want[i]) ++too_long;
+    if (tau_ > kTooLong * want[i]) ++too_long;
     level_[i] = len;
   }
   too_long_ += too_long;

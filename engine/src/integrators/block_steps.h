@@ -74,8 +74,9 @@ class BlockSteps {
   /// The block's state for a checkpoint (bit for bit), and its restore (false if it does not fit).
   std::vector<std::vector<double>> history() const;
   bool set_history(const std::vector<std::vector<double>>& h);
-  /// Particles that wanted a shorter step than the block's shortest level since the last call (they
-  /// took the shortest): the block was set too long for a sudden change.
+  /// Particle steps since the last call that took the block's shortest level though they wanted less
+  /// than half of it: the flow sped up inside a block (the block's shortest level is the shortest
+  /// wanted step at its start).
   std::int64_t take_too_long() { const std::int64_t k = too_long_; too_long_ = 0; return k; }
 
  private:

@@ -112,9 +112,8 @@ void RunChecks::check_pericentres(const RunConfig& cfg, const Particles& p) {
 void RunChecks::check_levels(std::int64_t too_long, int levels, std::int64_t step, double t) {
   if (too_long <= 0) return;
   warn("timestep", -1,
-       std::to_string(too_long) + " particle steps wanted a dt shorter than the shortest of time.levels = " +
-           std::to_string(levels) + " levels and took that level (the block began before the flow sped up): raise "
-           "time.levels or lower time.cfl",
+       std::to_string(too_long) + " particle steps took the shortest of time.levels = " + std::to_string(levels) +
+           " levels though they wanted less than half of it (the flow sped up inside a block): lower time.cfl",
        step, t);
 }
 
