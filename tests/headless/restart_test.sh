@@ -61,6 +61,13 @@ evrard 0.2 --set scene.n=300 --set time.dt_out=0.05
 kepler 0.1 --set time.dt=0.0005 --set time.dt_out=0.025
 burgers_upwind 0.5 --set time.dt_out=0.125
 SCENES
+  # individual time steps (time.levels; leapfrog only): the block state comes back with the checkpoint
+  sets=(--set scene.n_side=40 --set time.levels=5 --set time.dt_out=0.01)
+  "$sph" run sedov "${sets[@]}" --until 0.02 --threads 1 --quiet --out "$work/L1" 2> /dev/null; check "sedov levels uninterrupted" 0 $?
+  "$sph" run sedov "${sets[@]}" --until 0.01 --checkpoint-every 0.01 --threads 1 --quiet --out "$work/L2" 2> /dev/null
+  check "sedov levels first half" 0 $?
+  "$sph" resume "$work/L2" --until 0.02 --quiet 2> /dev/null; check "sedov levels resumed" 0 $?
+  ok "sedov levels: every file identical" same "$work/L1" "$work/L2"
   # above the size where loops go parallel (4096): run on 1 thread, resumed on 2, the same files
   sets=(--set scene.n_left=4000 --set time.dt_out=0.005)
   "$sph" run sod "${sets[@]}" --until 0.01 --threads 1 --quiet --out "$work/t1" 2> /dev/null; check "4500 particles, 1 thread" 0 $?
