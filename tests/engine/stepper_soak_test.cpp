@@ -64,8 +64,9 @@ RunConfig config_of(const SoakScene& s) {
   return cfg;
 }
 
-/// A random edit of the scene's params, as the GUI's widgets make them; one edit in 12 is wild (a huge
-/// timestep or CFL number) and may blow the run up, which the stepper must then report.
+/// A random edit of the scene's params, as the GUI's widgets make them (time.levels among them: refused
+/// where the integrator or a fixed dt cannot take it); one edit in 12 is wild (a huge timestep or CFL
+/// number) and may blow the run up, which the stepper must then report.
 Params random_edit(const Params& base, std::mt19937_64& rng) {
   static constexpr KernelType kernels[] = {KernelType::M4, KernelType::M5, KernelType::M6,
                                            KernelType::WendlandC2, KernelType::WendlandC4, KernelType::Gaussian};
@@ -73,12 +74,13 @@ Params random_edit(const Params& base, std::mt19937_64& rng) {
                                                    IntegratorType::RK4, IntegratorType::PredictorCorrector};
   std::uniform_real_distribution<double> u(0.0, 1.0);
   Params p = base;
-  switch (rng() % 6) {
+  switch (rng() % 7) {
     case 0: p.kernel.type = kernels[rng() % 6]; break;
     case 1: p.time.integrator = integrators[rng() % 4]; break;
     case 2: p.visc.alpha = 2.0 * u(rng); p.visc.beta = 2.0 * p.visc.alpha; break;
     case 3: p.time.cfl = 0.05 + 0.35 * u(rng); break;
     case 4: p.kernel.eta = 1.1 + 0.4 * u(rng); break;
+    case 5: p.time.levels = 1 + static_cast<int>(rng() % 6); break;  // refused unless leapfrog, adaptive dt
     default: break;  // the same params again
   }
   if (rng() % 12 == 0) {
