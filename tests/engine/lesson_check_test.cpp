@@ -123,6 +123,18 @@ TEST(LessonCheck, TotalVariationBoundsTheVelocityPeak) {
   EXPECT_LT(tv, 4.0 * w.report().diagnostics().v_max);  // with viscosity: nearly monotone either side of the peak
 }
 
+TEST(LessonCheck, LargestSpeedOfALatticeAtRestAndOfOneThatBuckles) {
+  // seed 000 §4.1: the square lattice stays at rest with the M4 kernel (velocities ~ round-off); with
+  // Wendland C2 it buckles (the stiffness has a negative eigenvalue, tests/scenes/lattice_stability_test.cpp)
+  LessonStep st;
+  st.scene = "box_lattice";
+  st.check = check_of(LessonCheck::Type::Below, "v_max");
+  const double rest = measure(lesson_config(st, {}), "v_max", "end", 30.0);
+  const double buckled = measure(lesson_config(st, {{"kernel.type", "wendland_c2"}}), "v_max", "end", 100.0);
+  EXPECT_LT(rest, 1e-8);
+  EXPECT_GT(buckled, 1e-3);
+}
+
 TEST(LessonCheck, UnknownMetricIsALessonError) {
   LessonStep st = sod_step(check_of(LessonCheck::Type::Below, "L1_rho"));
   EXPECT_THROW(measure(lesson_config(st, {}), "nope", "end", 0.01), LessonError);

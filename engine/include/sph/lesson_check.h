@@ -23,8 +23,9 @@ double measure(const RunConfig& cfg, const std::string& metric, const std::strin
 /// Runs a step's check. Throws DivergedError if a run blows up.
 CheckResult evaluate_check(const LessonStep& step);
 /// Metric names besides the reference's columns: E_drift (|E_tot - E_tot(0)| over |E_kin|+|E_int|+|E_pot|
-/// at t = 0), tv_vx (total variation of v_x along x over the fluid particles) and updates (particle
-/// evaluations so far: with individual time steps, only the active particles').
+/// at t = 0), tv_vx (total variation of v_x along x over the fluid particles), updates (particle
+/// evaluations so far: with individual time steps, only the active particles') and v_max (the largest
+/// fluid particle speed).
 std::vector<std::string> extra_metrics();
 
 }  // namespace sph
