@@ -29,4 +29,11 @@ DiagWidths diag_widths(const std::vector<DiagRow>& rows, const std::function<flo
   return w;
 }
 
+DiagRow energy_change_row(double dE, bool conserved) {
+  if (conserved) return {"dE/E0", value_text(dE, 3), "relative change of E_tot since t = 0"};
+  return {"dE/E0", value_text(std::nan(""), 3),
+          "not shown: this scene's method does not conserve energy (the finite pointset method, walls or damping "
+          "doing work, viscosity without an energy equation); E_tot and its curve show how it changes"};
+}
+
 }  // namespace sph::gui

@@ -22,6 +22,11 @@ struct DiagRow {
   std::string name, value, tip;
 };
 
+/// The "dE/E0" row: E_tot's relative change since t = 0, or a dash where the scene's method does not
+/// conserve energy (SceneSpec::energy_bound = 0: the finite pointset method, walls or damping doing work,
+/// viscosity without an energy equation), where a number would read as the method's error.
+DiagRow energy_change_row(double dE, bool conserved);
+
 /// Widths [px] of the name and value columns that hold every row, `measure` giving a text's width.
 struct DiagWidths {
   float name = 0.f, value = 0.f;

@@ -48,7 +48,7 @@ std::vector<DiagRow> diag_rows(const StepperFrame& f, double dE, double P, doubl
   add(rows, "E_int", d.E_int, 6, "internal energy of the EOS: sum m u (gas), sum m e(rho) (Tait liquid)");
   add(rows, "E_pot", d.E_pot, 6, "potential energy of the body force, the Lennard-Jones walls and self-gravity (1/2 sum m phi)");
   add(rows, "E_tot", d.E_tot, 6, "total energy (seed 000 eq. 3.4.5): conserved without boundaries that do work");
-  add(rows, "dE/E0", dE, 3, "relative change of E_tot since t = 0");
+  rows.push_back(energy_change_row(dE, f.config.scene && f.config.scene->energy_bound > 0.0));
   add(rows, "|P|", P, 4, "linear momentum, |sum m v| (seed 000 eq. 3.4.1); walls exchange momentum");
   add(rows, "|L|", L, 4, "angular momentum about the origin, |sum r x m v| (seed 000 eq. 3.4.3)");
   add(rows, "v_max", d.v_max, 4, "largest particle speed");

@@ -152,6 +152,10 @@ void profile_controls(render::ViewSettings& v, const Snapshot& snap) {
     ImGui::Checkbox("exact solution", &v.show_exact);
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("The scene's exact or reference curve of the plotted field along this axis, if it has one");
+    ImGui::Checkbox("error strip", &v.residuals);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("Under each panel, the values minus the exact curve at each particle: where the error is made.\n"
+                        "A comparison (A/B) always has a strip: B - A in 1D.");
   }
   std::vector<std::string> four;  // rho, v, p, u: those this scene has
   for (const char* name : {"rho", "v", "p", "u"})

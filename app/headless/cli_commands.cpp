@@ -65,6 +65,9 @@ void add_frame_options(CLI::App* run, CommandLine& cl) {
   run->add_flag("--linear", cl.run.linear,
                 "plane and 3D views: a linear colour scale even for a field spanning more than two decades "
                 "(by default such a field is coloured by log10)");
+  run->add_flag("--residuals", cl.run.residuals,
+                "profiles with an exact curve: a strip of the values minus the exact ones under each panel (a "
+                "comparison always has one: B - A in 1D)");
   run->add_option("--cut", cl.run.cut, "3D scenes: a cutaway, only the particles with AXIS <= VALUE drawn, e.g. z=0");
   run->add_option("--profile-axis", cl.run.profile_axis,
                   "2D scenes: plot the field against x or y (with its reference curve) instead of the plane; off");

@@ -25,6 +25,7 @@ struct RunOptions {
   std::string range = "auto";
   bool log_scale = false;
   bool linear = false;              ///< --linear: no automatic log10 colour scale
+  bool residuals = false;           ///< --residuals: profiles with a strip of the error against the exact curve
   std::string cut;                  ///< --cut AXIS=VALUE: 3D cutaway (e.g. z=0), empty: none
   std::string profile_axis = "off";  ///< 2D scenes: "x" or "y" plots the field against that coordinate
   std::string video;

@@ -29,6 +29,7 @@ FrameRecorder::FrameRecorder(const FrameOptions& options, std::unique_ptr<Offscr
   view_.percentile_hi = options.percentile_hi;
   view_.log_scale = options.log_scale;
   view_.auto_log = options.auto_log;
+  view_.residuals = options.residuals;
   view_.cut_axis = options.cut_axis;
   view_.cut_at = options.cut_at;
   view_.profile_axis = render::parse_profile_axis(options.profile_axis).value_or(-1);

@@ -44,6 +44,7 @@ struct FrameOptions {
   float percentile_lo = 0, percentile_hi = 100;  ///< auto range between these percentiles (--range pLO:HI)
   bool log_scale = false;     ///< colour by log10 of the field (--log)
   bool auto_log = true;       ///< log10 when a field spans more than two decades (off: --linear)
+  bool residuals = false;     ///< profiles: the strip of the error against the exact curve (--residuals)
   int cut_axis = -1;          ///< 3D cutaway (--cut): only particles with coordinate cut_axis <= cut_at
   float cut_at = 0.f;
   std::string profile_axis = "off";  ///< 2D: "x" or "y" (profile of the field against it), or "off"

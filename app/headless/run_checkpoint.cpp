@@ -59,6 +59,7 @@ std::string options_json(const RunOptions& opt) {
     f["range"] = opt.range;
     f["log"] = opt.log_scale;
     f["linear"] = opt.linear;
+    f["residuals"] = opt.residuals;
     f["cut"] = opt.cut;
     f["profile_axis"] = opt.profile_axis;
     f["panels"] = opt.panels;
@@ -119,6 +120,7 @@ RunOptions options_from_json(const std::string& text, const std::string& path) {
       o.range = f.at("range").get<std::string>();
       o.log_scale = f.at("log").get<bool>();
       o.linear = f.value("linear", false);  // checkpoints written before --linear existed
+      o.residuals = f.value("residuals", false);
       o.cut = f.value("cut", std::string());
       o.profile_axis = f.at("profile_axis").get<std::string>();
       o.panels = f.at("panels").get<std::string>();

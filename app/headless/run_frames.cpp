@@ -57,6 +57,7 @@ std::unique_ptr<FrameRecorder> make_recorder(const RunOptions& opt) {
   set_range(opt.range, fo);
   fo.log_scale = opt.log_scale;
   fo.auto_log = !opt.linear;
+  fo.residuals = opt.residuals;
   if (!opt.cut.empty() && !parse_cut(opt.cut, &fo.cut_axis, &fo.cut_at))
     throw ConfigError("--cut " + opt.cut + ": expected AXIS=VALUE with AXIS x, y or z, e.g. z=0");
   fo.profile_axis = opt.profile_axis;

@@ -16,10 +16,10 @@ constexpr int kGap = 4;   // label gap [px at text scale 1]
 int x_tick_target(float box_w, int s) { return std::max(2, static_cast<int>(box_w / (110.f * s))); }
 int y_tick_target(float box_h, int s) { return std::max(2, static_cast<int>(box_h / (50.f * s))); }
 
-PixelRect axes_box(const PixelRect& area, float y_label_width, int s, float lh, float aspect) {
+PixelRect axes_box(const PixelRect& area, float y_label_width, int s, float lh, float aspect, bool x_labels) {
   const float left = y_label_width + (kTick + kGap) * s;
-  const float top = lh + kGap * s;                         // y title above the box
-  const float bottom = (kTick + 2 * kGap) * s + 2.f * lh;  // tick labels, then the x title
+  const float top = lh + kGap * s;  // y title above the box
+  const float bottom = x_labels ? (kTick + 2 * kGap) * s + 2.f * lh : (kTick + kGap) * s;  // tick labels, x title
   PixelRect b{area.x + left, area.y + top, area.w - left, area.h - top - bottom};
   b.w = std::max(b.w, 8.f);
   b.h = std::max(b.h, 8.f);
@@ -61,17 +61,26 @@ void add_axes(FrameBuild& f, const PixelRect& box, const AxesRanges& r, const Ax
     const float X = crisp(px(x));
     if (style.grid) f.under.line(X, box.y, X, box.bottom(), 1.f, palette::kGrid);
     f.over.line(X, box.bottom(), X, box.bottom() + kTick * s, lw, palette::kAxis);
-    f.text.add(format_tick(x, xt.step), X, box.bottom() + (kTick + kGap) * s, s, palette::kText, Align::Center);
+    if (style.x_labels)
+      f.text.add(format_tick(x, xt.step), X, box.bottom() + (kTick + kGap) * s, s, palette::kText, Align::Center);
   }
+  // labels a line apart at least: in a box too short for that, only the label nearest its middle
+  const float spacing = yt.values.size() > 1 ? box.h * static_cast<float>(yt.step / (r.y1 - r.y0)) : box.h;
+  const double middle = 0.5 * (r.y0 + r.y1);
+  double only = yt.values.empty() ? middle : yt.values.front();
+  for (double y : yt.values)
+    if (std::abs(y - middle) < std::abs(only - middle)) only = y;
   for (double y : yt.values) {
     const float Y = crisp(py(y));
     if (style.grid) f.under.line(box.x, Y, box.right(), Y, 1.f, palette::kGrid);
     f.over.line(box.x - kTick * s, Y, box.x, Y, lw, palette::kAxis);
-    f.text.add(format_tick(y, yt.step), box.x - (kTick + kGap) * s, Y - 0.5f * lh, s, palette::kText, Align::Right);
+    if (spacing >= lh || y == only)
+      f.text.add(format_tick(y, yt.step), box.x - (kTick + kGap) * s, Y - 0.5f * lh, s, palette::kText, Align::Right);
   }
   f.over.rect_outline({box.x - lw, box.y - lw, box.w + 2 * lw, box.h + 2 * lw}, lw, palette::kAxis);
-  f.text.add(style.x_title, box.x + 0.5f * box.w, box.bottom() + (kTick + 2 * kGap) * s + lh, s, palette::kText,
-             Align::Center);
+  if (style.x_labels)
+    f.text.add(style.x_title, box.x + 0.5f * box.w, box.bottom() + (kTick + 2 * kGap) * s + lh, s, palette::kText,
+               Align::Center);
   f.text.add(style.y_title, box.x, box.y - lh - kGap * s, s, palette::kText);
 }
 

@@ -16,6 +16,7 @@ struct AxesStyle {
   std::string x_title = "x";
   std::string y_title;
   bool grid = false;
+  bool x_labels = true;  ///< false: ticks only, no x tick labels or x title (a panel stacked on another)
 };
 
 /// Tick counts that suit a box of this size (about one label per 100 px across, 50 px up at scale 1).
@@ -23,8 +24,9 @@ int x_tick_target(float box_w, int s);
 int y_tick_target(float box_h, int s);
 
 /// Room the labels need around the box inside `area`, given the widest y label [px]. `aspect`
-/// (width/height) > 0 shrinks the box to that shape, centred. The result has whole-pixel edges.
-PixelRect axes_box(const PixelRect& area, float y_label_width, int s, float lh, float aspect);
+/// (width/height) > 0 shrinks the box to that shape, centred; without x_labels no room is kept for the
+/// x tick labels and title. The result has whole-pixel edges.
+PixelRect axes_box(const PixelRect& area, float y_label_width, int s, float lh, float aspect, bool x_labels = true);
 /// Width of the widest y tick label for these data limits and box height.
 float y_label_width(const TextBatch& text, double y0, double y1, float box_h, int s);
 

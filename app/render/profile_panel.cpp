@@ -139,7 +139,7 @@ void add_curve_and_legend(FrameBuild& f, const ProfilePanel& p, const ShownField
     // Thinner than the dots, so that the particles stay visible on both sides of the curve.
     const float w = 0.75f * s + 0.5f;
     clipped->polyline(xy, w, p.curve_color);
-    rows.push_back({p.curve_label, false, p.curve_color, w, {0, 0, 0, 0}});
+    if (!p.curve_label.empty()) rows.push_back({p.curve_label, false, p.curve_color, w, {0, 0, 0, 0}});
     densify(xy, 2.f, &data);
   }
   for (const ProfileRun& run : p.runs) {
@@ -175,22 +175,29 @@ sph::ExactCurve curve_of(const sph::Snapshot& snap, const std::string& field, in
   return out;
 }
 
+float panel_label_width(const FrameBuild& f, const ProfilePanel& p, int axis) {
+  const int s = f.layout.text_scale;
+  const float lh = f.text.line_height(s);
+  const AxesRanges r = panel_ranges(p, axis);
+  // Two passes: the y labels' width depends on the box height, which depends on the labels.
+  const float first = std::max(p.y_label_min, y_label_width(f.text, r.y0, r.y1, p.area.h, s));
+  const PixelRect box = axes_box(p.area, first, s, lh, 0.f, p.x_labels);
+  return std::max(p.y_label_min, y_label_width(f.text, r.y0, r.y1, box.h, s));
+}
+
 void compose_panel(FrameBuild& f, const ProfilePanel& p, const ViewSettings& view, const ShownField& shown, int axis,
                    bool primary) {
   FrameLayout& L = f.layout;
   const int s = L.text_scale;
   const float lh = f.text.line_height(s);
   const AxesRanges r = panel_ranges(p, axis);
-
-  // Two passes: the y labels' width depends on the box height, which depends on the labels.
-  PixelRect box = axes_box(p.area, y_label_width(f.text, r.y0, r.y1, p.area.h, s), s, lh, 0.f);
-  box = axes_box(p.area, y_label_width(f.text, r.y0, r.y1, box.h, s), s, lh, 0.f);
+  const PixelRect box = axes_box(p.area, panel_label_width(f, p, axis), s, lh, 0.f, p.x_labels);
   const CameraMatrices camera{Mat4{}, ortho(static_cast<float>(r.x0), static_cast<float>(r.x1), static_cast<float>(r.y0),
                                             static_cast<float>(r.y1), -1.f, 1.f),
                               Vec3f{}};
   // The plot's fill is a scissored clear (f.fill, set by add_axes; a batch's own for other panels).
   const PixelRect fill_before = f.fill;
-  add_axes(f, box, r, {p.x_title, p.y_title, true});
+  add_axes(f, box, r, {p.x_title, p.y_title, true, p.x_labels});
   if (!primary) f.fill = fill_before;
   const float radius = view.point_px * 0.5f * static_cast<float>(1 + s);  // grows with the text: 3 px -> 4.5 px at 720p
 

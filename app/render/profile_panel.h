@@ -31,10 +31,15 @@ struct ProfilePanel {
   bool fixed = false;     ///< y limits [y0, y1] as given
   double y0 = 0.0, y1 = 1.0;
   int legend_scale = 0;   ///< > 0: the legend's text scale (small panels)
+  float y_label_min = 0.f;  ///< the y labels' column at least this wide [px]: stacked panels share their x axis
+  bool x_labels = true;     ///< false: no x tick labels or title (the panel under it has them)
 };
 
 /// The exact curve of `field` along `axis` (log10 of its positive values when `log`), or an empty one.
 sph::ExactCurve curve_of(const sph::Snapshot& snap, const std::string& field, int axis, bool log);
+
+/// The width [px] of the panel's y labels at its area (compose_panel's own measure).
+float panel_label_width(const FrameBuild& f, const ProfilePanel& p, int axis);
 
 /// Draws one panel. primary: its first run becomes the frame's primary particles (f.instances in
 /// layout.plot); otherwise every run is a batch of its own.

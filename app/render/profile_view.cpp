@@ -8,6 +8,7 @@
 #include "palette.h"
 #include "profile_axis.h"
 #include "profile_panel.h"
+#include "profile_residual.h"
 #include "sph/snapshot.h"
 
 namespace sph::render {
@@ -62,7 +63,7 @@ void compose_profile(FrameBuild& f, const sph::Snapshot& snap, const ViewSetting
   p.fixed = !view.auto_range && shown.field != nullptr;
   p.y0 = shown.range.min;
   p.y1 = shown.range.max;
-  compose_panel(f, p, view, shown, axis, true);
+  compose_with_residuals(f, std::move(p), view, shown, axis, true, view.residuals);
 }
 
 std::vector<std::string> panel_fields(const sph::Snapshot& snap, const std::vector<std::string>& panels) {
@@ -124,10 +125,11 @@ void compose_profile_panels(FrameBuild& f, const FrameScene& scene, const ViewSe
     const Rgb c = colormap_contrast(shown.cmap);
     p.curve_color = compare ? kCompareExact : Rgba{c.r, c.g, c.b, 1.f};
     p.curve_label = a.curve_label.empty() ? "exact" : a.curve_label;
-    compose_panel(f, p, view, shown, axis, false);
-    if (k == 0) {  // the first panel stands for the frame (picking hit-tests every batch)
-      L.plot = f.batches.back().rect;
-      L.plot_to_clip = f.batches.back().camera.proj;
+    const std::size_t drawn = compose_with_residuals(f, std::move(p), view, shown, axis, false,
+                                                     view.residuals || compare);
+    if (k == 0 && drawn > 0) {  // the first panel stands for the frame (picking hit-tests every batch)
+      L.plot = f.batches[drawn - 1].rect;
+      L.plot_to_clip = f.batches[drawn - 1].camera.proj;
     }
   }
 }

@@ -52,6 +52,9 @@ struct ViewSettings {
   float min_radius_px = 1.f;   ///< smallest disc drawn [px]
 
   bool show_exact = true;      ///< profiles: draw the exact/reference curve when the snapshot has one
+  /// Profiles with an exact curve: under each panel a strip of each run's values minus the exact ones
+  /// (profile_residual.h); a comparison (A/B) always has it.
+  bool residuals = false;
   bool show_walls = true;      ///< 2D/3D: draw wall particles (in palette::kWall); profiles never show them
   bool show_tree = true;       ///< 2D/3D: draw the snapshot's Barnes-Hut cells (render::add_tree_overlay) when it has them
   bool show_outlines = true;   ///< 2D: draw the snapshot's reference outlines over the particles

@@ -12,36 +12,14 @@
 namespace sph::render::test {
 namespace {
 
-class RenderCompare : public OffscreenTest {
- protected:
-  std::vector<std::uint8_t> render_scene(const FrameScene& scene, const ViewSettings& view) {
-    std::vector<std::uint8_t> rgba;
-    std::string err;
-    EXPECT_TRUE(renderer_->render(scene, view, kWidth, kHeight, &rgba, &err)) << err;
-    EXPECT_EQ(renderer_->gl_error(), 0u);
-    return rgba;
-  }
-};
-
-/// Sod with run B's density 20% low on [0, 0.15] (where the curve is flat), as a second run would differ.
-Snapshot sod_b() {
-  Snapshot b = sod_profile_1d(400);
-  SnapshotField& rho = b.fields.front();
-  for (std::size_t i = 0; i < b.count; ++i)
-    if (b.x[i] > 0.f && b.x[i] < 0.15f) rho.values[i] *= 0.8f;
-  return b;
-}
+class RenderCompare : public OffscreenTest {};
 
 TEST_F(RenderCompare, ProfileShowsBothRunsInTheirColoursWithTheirL1) {
-  const Snapshot a = sod_profile_1d(400), b = sod_b();
-  FrameScene scene;
-  scene.a = &a;
-  scene.b = &b;
-  scene.label_a = "A: kernel.type=M4";
-  scene.label_b = "B: kernel.type=M6";
+  const Snapshot a = sod_profile_1d(400), b = sod_profile_1d_run_b(400);
+  FrameScene scene = m4_against_m6(a, b);
   scene.errors_a = {{"count", 400}, {"L1_rho", 0.00304}};
   scene.errors_b = {{"count", 400}, {"L1_rho", 0.0121}};
-  const auto rgba = render_scene(scene, ViewSettings{});
+  const auto rgba = render(scene, ViewSettings{});
   ASSERT_EQ(layout().legend_rows.size(), 3u);
   EXPECT_EQ(layout().legend_rows[0], "exact");
   EXPECT_EQ(layout().legend_rows[1], "A: kernel.type=M4   L1_rho = 0.00304");
@@ -97,7 +75,7 @@ TEST_F(RenderCompare, DifferenceMapIsRedWhereBIsLarger) {
   FrameScene scene;
   scene.a = &a;
   scene.b = &b;
-  const auto rgba = render_scene(scene, ViewSettings{});
+  const auto rgba = render(scene, ViewSettings{});
   const Rgb hot = colormap_rgb(Colormap::Coolwarm, 1.f), cold = colormap_rgb(Colormap::Coolwarm, 0.f);
   const float third = kWidth / 3.f;
   const PixelRect left{0, 0, 2.f * third, static_cast<float>(kHeight)}, right{2.f * third, 0, third, static_cast<float>(kHeight)};
@@ -118,7 +96,7 @@ TEST_F(RenderCompare, PickFindsTheParticleAndTheHighlightRingsIt) {
   scene.highlight.neighbours = {{59, 1.f}, {61, 0.5f}};
   ViewSettings v;
   v.show_exact = false;
-  const auto rgba = render_scene(scene, v);
+  const auto rgba = render(scene, v);
   float px, py;
   ASSERT_TRUE(layout().to_pixel(s.x[60], s.fields[0].values[60], 0.f, &px, &py));
   const auto picked = renderer_->renderer().pick(px + 1.f, py, 5.f);

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "colormap.h"
+#include "frame_scene.h"
 #include "frame_recorder.h"
 #include "palette.h"
 
@@ -77,6 +78,16 @@ inline int count_colour(const std::vector<std::uint8_t>& rgba, int width, const 
 }
 
 /// One off-screen renderer shared by all tests of a suite (context creation is the slow part).
+/// The A/B scene of two snapshots, labelled as an M4-against-M6 comparison.
+inline FrameScene m4_against_m6(const Snapshot& a, const Snapshot& b) {
+  FrameScene scene;
+  scene.a = &a;
+  scene.b = &b;
+  scene.label_a = "A: kernel.type=M4";
+  scene.label_b = "B: kernel.type=M6";
+  return scene;
+}
+
 class OffscreenTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
@@ -97,6 +108,14 @@ class OffscreenTest : public ::testing::Test {
     EXPECT_TRUE(renderer_->render(snap, view, w, h, &rgba, &err)) << err;
     EXPECT_EQ(renderer_->gl_error(), 0u) << "glGetError after rendering";
     EXPECT_EQ(rgba.size(), static_cast<std::size_t>(w) * h * 4);
+    return rgba;
+  }
+  /// A comparison's frame (scene.b set), with the same checks.
+  std::vector<std::uint8_t> render(const FrameScene& scene, const ViewSettings& view) {
+    std::vector<std::uint8_t> rgba;
+    std::string err;
+    EXPECT_TRUE(renderer_->render(scene, view, kWidth, kHeight, &rgba, &err)) << err;
+    EXPECT_EQ(renderer_->gl_error(), 0u);
     return rgba;
   }
   const FrameLayout& layout() const { return renderer_->last_layout(); }

@@ -218,4 +218,11 @@ Snapshot random_cloud(int dim, int n) {
   return s;
 }
 
+Snapshot sod_profile_1d_run_b(int n) {
+  Snapshot b = sod_profile_1d(n);
+  for (std::size_t i = 0; i < b.count; ++i)
+    if (b.x[i] > 0.f && b.x[i] < 0.15f) b.fields.front().values[i] *= 0.8f;
+  return b;
+}
+
 }  // namespace sph::render::test

@@ -24,6 +24,8 @@ Outline circle_outline(std::string label, float cx, float cy, float r, int n);
 /// Sod shock tube at t = 0.2 on [-0.5, 0.5]: n particles whose "rho" and "p" follow the exact solution
 /// slightly smoothed, plus the exact curves of both sampled at 801 points.
 Snapshot sod_profile_1d(int n);
+/// sod_profile_1d with its density 20% low on (0, 0.15), where the exact curve is flat: a run B that differs.
+Snapshot sod_profile_1d_run_b(int n);
 /// The exact Sod density at t = 0.2 (gamma = 1.4, left rho = p = 1, right rho = 0.125, p = 0.1).
 float sod_exact_rho(float x);
 

@@ -32,6 +32,14 @@ TEST(DiagText, NonFiniteValuesAreNamed) {
   EXPECT_EQ(value_text(0.1234567891, 4), "0.1235");
 }
 
+TEST(DiagText, EnergyChangeIsADashWhereTheMethodDoesNotConserveEnergy) {
+  // Burgers by FPM showed "dE/E0 = 0.779" as if it were the method's error
+  EXPECT_EQ(energy_change_row(0.779, false).value, "\u2014");
+  EXPECT_NE(energy_change_row(0.779, false).tip.find("does not conserve energy"), std::string::npos);
+  EXPECT_EQ(energy_change_row(-3.2e-4, true).value, "-0.00032");
+  EXPECT_EQ(energy_change_row(0.779, true).name, "dE/E0");
+}
+
 TEST(DiagText, TitlesGiveTheFrameValueAndTheDivergence) {
   StepperFrame f;
   EXPECT_EQ(plot_title("E_tot", 2.5, f), "E_tot = 2.5");
