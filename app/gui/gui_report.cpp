@@ -32,7 +32,12 @@ void report_view(const ParticleView& view, const StepperFrame& f) {
 /// The lesson step's check at exit (waits for it): for scripted checks of the panel.
 void report_lesson(GuiState& s) {
   LessonUi& L = s.lesson;
-  if (!L.lesson || !L.job) return;
+  if (!L.lesson) return;
+  const LessonStep& st = L.lesson->steps[static_cast<std::size_t>(L.step)];
+  if (!st.predict.empty())
+    std::printf("sph-gui: lesson step %d predicts: %s\nsph-gui: answer %s\n", L.step + 1, st.predict.c_str(),
+                L.answer_shown ? ("shown: " + st.answer).c_str() : "hidden");
+  if (!L.job) return;
   L.job->wait();
   const int n = static_cast<int>(L.lesson->steps.size());
   if (!L.job->error().empty())

@@ -100,6 +100,7 @@ void GuiState::load(const RunConfig& cfg) {
   values = cfg.values;
   resync_version_ = awaiting_ = stepper_.load(cfg);
   if (cfg.scene) scene_name_ = cfg.scene->name;
+  if (pause_at > 0.0) set_pause_at(0.0);
 }
 
 void GuiState::set_real_time_factor(double f) {

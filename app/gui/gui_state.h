@@ -65,7 +65,8 @@ class GuiState {
   // --- commands (channel 2) --------------------------------------------------------------------------
   /// Rebuilds the World at t = 0 with the edited params and scene values (applies pending edits).
   void reset();
-  /// Loads another scene (its defaults, or a file's); the edit copies follow once it is built.
+  /// Loads another scene (its defaults, or a file's); the edit copies follow once it is built. A pause
+  /// time (set_pause_at) ends with the scene it was set for.
   void load(const RunConfig& cfg);
   void pause() { stepper_.pause(); }
   /// Play; at t_end with "stop at t_end" on, play replays the run from t = 0.
@@ -73,6 +74,11 @@ class GuiState {
   void step_once() { stepper_.step_once(); }
   void set_real_time_factor(double f);
   void set_stop_at_end(bool on);
+  /// Pause when the run reaches time t (a lesson step's pause_at; Play runs on); t <= 0: never.
+  void set_pause_at(double t) {
+    pause_at = t > 0.0 ? t : 0.0;
+    stepper_.set_pause_at(pause_at);
+  }
   /// Frames carry particle k's Barnes-Hut walk (the tree overlay); k < 0 turns it off.
   void set_tree_probe(std::int64_t k);
   void set_record_interval(double every) { stepper_.set_record_interval(every); }
@@ -94,6 +100,7 @@ class GuiState {
   std::string compare_text = "kernel.type=M6";  ///< the compare panel's overrides, comma-separated
   double real_time_factor = 0.0;   ///< as last sent (0 = as fast as possible)
   bool stop_at_end = true;         ///< as last sent
+  double pause_at = 0.0;           ///< as last sent (0: no pause time)
   std::int64_t tree_probe = -1;    ///< as last sent (-1: no tree overlay)
   ConvergeUi converge;             ///< the convergence study panel
   LessonUi lesson;                 ///< the lesson panel

@@ -1,24 +1,13 @@
 #include "lesson_ui.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
-#include <sstream>
 
 #include "profile_axis.h"
 #include "sph/lesson_check.h"
 
 namespace sph::gui {
-namespace {
-
-/// 17 digits: reads back as the same double (RunConfig::set takes text).
-std::string exact(double v) {
-  std::ostringstream os;
-  os.precision(17);
-  os << v;
-  return os.str();
-}
-
-}  // namespace
 
 std::vector<std::string> lesson_files() {
   std::vector<std::string> out;
@@ -37,7 +26,7 @@ std::vector<std::string> lesson_files() {
 RunConfig step_config(const LessonStep& step) {
   const LessonCheck& k = step.check;
   if (k.type == LessonCheck::Type::Compare) return lesson_config(step, k.a);
-  if (k.type == LessonCheck::Type::Falls) return lesson_config(step, {{k.key, exact(k.values.front())}});
+  if (k.type == LessonCheck::Type::Falls) return lesson_config(step, {{k.key, lesson_number(k.values.front())}});
   return lesson_config(step, {});
 }
 
@@ -46,6 +35,22 @@ void apply_step_view(const LessonView& step, render::ViewSettings& view) {
   if (step.panels) view.panels = *step.panels;
   if (step.log >= 0) view.log_scale = step.log == 1;
   if (const auto axis = render::parse_profile_axis(step.profile_axis)) view.profile_axis = *axis;
+  if (step.range) {
+    view.auto_range = false;
+    view.range_min = static_cast<float>(step.range->first);
+    view.range_max = static_cast<float>(step.range->second);
+  }
+  if (step.zoom) {
+    view.camera2d.fit = false;
+    view.camera2d.center_x = static_cast<float>((*step.zoom)[0]);
+    view.camera2d.center_y = static_cast<float>((*step.zoom)[1]);
+    view.camera2d.zoom = static_cast<float>((*step.zoom)[2]);
+  }
+  if (!step.cut.empty()) {  // "z=0.5" (checked when the lesson was read)
+    view.cut_axis = step.cut[0] - 'x';
+    view.cut_at = std::strtof(step.cut.c_str() + 2, nullptr);
+  }
+  if (step.residuals >= 0) view.residuals = step.residuals == 1;
 }
 
 std::vector<std::string> step_compare(const LessonStep& step) {

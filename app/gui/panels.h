@@ -33,5 +33,7 @@ bool open_lesson(GuiState& s, const std::string& path, int step);
 void show_lesson_step(GuiState& s, int step);
 /// Starts the current step's check (unless it is already running).
 void check_lesson_step(GuiState& s);
+/// The Lesson panel's editor: the run on screen as a step of a new lesson, saved as a lesson file.
+void lesson_editor(GuiState& s);
 
 }  // namespace sph::gui

@@ -144,6 +144,47 @@ TEST(LessonParse, AStepsViewIsRead) {
   }
 }
 
+TEST(LessonParse, ViewRangeZoomCutAndResidualsAQuestionAndAPause) {
+  const std::string below = R"("check": {"type": "below", "metric": "L1_rho", "limit": 1})";
+  const Lesson l = parse_lesson(
+      lesson_with(std::string(kStep) +
+                  R"(, "view": {"range": [0.1, 1.2], "zoom": [0.25, -0.5, 4], "cut": "z=0.5", "residuals": true},)"
+                  R"( "predict": {"question": "Where is the error largest?", "answer": "At the contact."},)"
+                  R"( "pause_at": 0.05, )" + below),
+      "l.json");
+  const LessonStep& st = l.steps[0];
+  ASSERT_TRUE(st.view.range.has_value());
+  EXPECT_EQ(*st.view.range, std::make_pair(0.1, 1.2));
+  ASSERT_TRUE(st.view.zoom.has_value());
+  EXPECT_EQ(*st.view.zoom, (std::array<double, 3>{0.25, -0.5, 4.0}));
+  EXPECT_EQ(st.view.cut, "z=0.5");
+  EXPECT_EQ(st.view.residuals, 1);
+  EXPECT_EQ(st.predict, "Where is the error largest?");
+  EXPECT_EQ(st.answer, "At the contact.");
+  EXPECT_EQ(st.pause_at, 0.05);
+  const std::string text = lesson_text(l);
+  EXPECT_NE(text.find("range 0.1 to 1.2; centre (0.25, -0.5), zoom 4; cutaway z=0.5; error strip"), std::string::npos);
+  EXPECT_NE(text.find("predict first: Where is the error largest?\n  answer: At the contact."), std::string::npos);
+  EXPECT_NE(text.find("pauses at t = 0.05"), std::string::npos);
+  for (const auto& [part, where] : std::vector<std::pair<std::string, std::string>>{
+           {R"("view": {"range": [1, 1]})", "steps[0].view.range: must be [min, max] with min < max"},
+           {R"("view": {"range": [0, "1"]})", "steps[0].view.range: must be"},
+           {R"("view": {"zoom": [0, 0, 0]})", "steps[0].view.zoom: must be [centre x, centre y, zoom] with zoom > 0"},
+           {R"("view": {"zoom": [0, 0]})", "steps[0].view.zoom"},
+           {R"("view": {"cut": "w=0"})", "steps[0].view.cut: 'w=0' is not AXIS=VALUE"},
+           {R"("view": {"cut": "z=nan"})", "steps[0].view.cut"},
+           {R"("view": {"residuals": "yes"})", "steps[0].view.residuals: must be true or false"},
+           {R"("predict": "why?")", "steps[0].predict: must be an object"},
+           {R"("predict": {"question": "why?"})", "steps[0].predict.answer: missing"},
+           {R"("predict": {"question": "", "answer": "a"})", "steps[0].predict: question and answer must not be empty"},
+           {R"("predict": {"question": "q", "answer": "a", "hint": "h"})", "steps[0].predict.hint: unknown key"},
+           {R"("pause_at": 0)", "steps[0].pause_at: must be a time > 0"},
+           {R"("pause_at": "soon")", "steps[0].pause_at: must be a finite number"}}) {
+    const std::string msg = error_of(lesson_with(std::string(kStep) + ", " + part + ", " + below));
+    EXPECT_NE(msg.find(where), std::string::npos) << part << " -> " << msg;
+  }
+}
+
 TEST(LessonParse, UnreadableFile) {
   try {
     load_lesson("/nonexistent/l.json");

@@ -13,21 +13,14 @@
 #include "sph/checkpoint.h"
 #include "sph/stepper.h"
 #include "sph/world.h"
+#include "stepper_wait.h"
 
 namespace sph {
 namespace {
 
 using namespace std::chrono_literals;
 
-bool wait_for(Stepper& s, const std::function<bool(const StepperFrame&)>& pred) {
-  const auto end = std::chrono::steady_clock::now() + 20s;
-  while (std::chrono::steady_clock::now() < end) {
-    const StepperFrame* f = s.latest();
-    if (f && pred(*f)) return true;
-    std::this_thread::sleep_for(1ms);
-  }
-  return false;
-}
+using test::wait_for;
 
 TEST(StepperState, AStateSavedAtTheEndLoadsStoppedThere) {
   // it ran on past t_end (sph-gui --load-state of a state saved at the end recorded frames forever)

@@ -3,6 +3,7 @@
 // sph/lesson_check.h). Parsing validates everything a check needs (scene, keys, values, the metric) so a
 // bad file is refused, naming the file and the key, before anything runs.
 #pragma once
+#include <array>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -49,6 +50,12 @@ struct LessonView {
   std::optional<std::vector<std::string>> panels;
   int log = -1;                     ///< 0: linear colour scale, 1: log10
   std::string profile_axis;         ///< "off" (the plane), "x", "y", "r" (as --profile-axis)
+  /// A fixed colour range (and profile y range) [min, max] in the field's units (log10 units with log).
+  std::optional<std::pair<double, double>> range;
+  /// The 2D plane view's centre (x, y) and zoom (1: the scene's bounds fill the plot, 2: twice as close).
+  std::optional<std::array<double, 3>> zoom;
+  std::string cut;                  ///< 3D cutaway "AXIS=VALUE", e.g. "z=0" (as --cut): the inside shows
+  int residuals = -1;               ///< profiles: 1 the error strip under each panel, 0 none
 };
 
 struct LessonStep {
@@ -58,6 +65,9 @@ struct LessonStep {
   std::string change, look_at;
   LessonView view;
   LessonCheck check;
+  /// A question to answer before running ("predict first") and its answer, which the GUI shows on a key.
+  std::string predict, answer;
+  double pause_at = -1.0;  ///< > 0: the GUI pauses the run when it reaches this time; Play goes on
 };
 
 struct Lesson {
@@ -71,6 +81,11 @@ struct Lesson {
 Lesson parse_lesson(const std::string& text, const std::string& origin);
 /// Reads and parses a lesson file; throws LessonError (also when it cannot be read).
 Lesson load_lesson(const std::string& path);
+/// The lesson as JSON text in the shipped files' layout (a step's keys one per line); parse_lesson reads it
+/// back to the same lesson. The GUI's lesson editor saves with it.
+std::string lesson_json(const Lesson& lesson);
+/// A number as lesson files and key=value overrides write it: the shortest text that reads back the same.
+std::string lesson_number(double v);
 /// The steps as text (`sph lesson show`): title, text, scene and sets, change, look at, the claim.
 std::string lesson_text(const Lesson& lesson);
 /// One line stating a step's claim, e.g. "L1_rho at t = 0.2 falls by 1.5x each time scene.n_left goes 100 -> 200 -> 400".

@@ -130,6 +130,9 @@ class Stepper {
   void set_real_time_factor(double f);
   /// Pause when t reaches params.t_end (default on).
   void set_stop_at_end(bool on);
+  /// Pause when a step reaches time t (the step is shortened to land on it); Resume runs on past it, and
+  /// a run reset to before t pauses there again. t <= 0: never (the default).
+  void set_pause_at(double t);
   /// Frames carry the Barnes-Hut cells of particle k's walk (Snapshot::tree_cells) for the tree
   /// overlay; k < 0 = none (the default).
   void set_tree_probe(std::int64_t k);

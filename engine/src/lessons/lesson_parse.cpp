@@ -1,12 +1,10 @@
 // Lesson JSON -> Lesson, every key checked (sph/lesson.h): unknown keys, wrong types and values, and each
 // run's configuration (scene, keys, values, physics) and metric, so a bad file fails before any run.
-#include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <nlohmann/json.hpp>
-#include <set>
 #include <sstream>
 
+#include "lesson_json.h"
 #include "lesson_metric.h"
 #include "sph/lesson.h"
 #include "sph/lesson_check.h"
@@ -16,37 +14,11 @@
 namespace sph {
 namespace {
 
-using json = nlohmann::json;
-
-/// Throws a LessonError for `path` (e.g. "steps[1].check.factor") of the file `origin`.
-[[noreturn]] void fail(const std::string& origin, const std::string& path, const std::string& what) {
-  throw LessonError(origin + ": " + path + ": " + what);
-}
-
-/// Refuses keys of `obj` outside `allowed`.
-void only_keys(const json& obj, const std::set<std::string>& allowed, const std::string& origin, const std::string& path) {
-  for (auto it = obj.begin(); it != obj.end(); ++it)
-    if (!allowed.count(it.key())) {
-      std::string list;
-      for (const auto& k : allowed) list += " " + k;
-      fail(origin, path + (path.empty() ? "" : ".") + it.key(), "unknown key (known:" + list + ")");
-    }
-}
-
-std::string text_of(const json& obj, const char* key, bool required, const std::string& origin, const std::string& path) {
-  if (!obj.contains(key)) {
-    if (required) fail(origin, path + key, "missing (a string)");
-    return {};
-  }
-  if (!obj[key].is_string()) fail(origin, path + key, "must be a string");
-  return obj[key].get<std::string>();
-}
-
-double number_of(const json& obj, const char* key, double fallback, const std::string& origin, const std::string& path) {
-  if (!obj.contains(key)) return fallback;
-  if (!obj[key].is_number() || !std::isfinite(obj[key].get<double>())) fail(origin, path + key, "must be a finite number");
-  return obj[key].get<double>();
-}
+using lessons::fail;
+using lessons::json;
+using lessons::number_of;
+using lessons::only_keys;
+using lessons::text_of;
 
 /// {"kernel.type": "M6", "scene.n_left": 400} -> pairs (numbers written exactly, booleans as on/off).
 LessonSets sets_of(const json& obj, const char* key, const std::string& origin, const std::string& path) {
@@ -64,34 +36,6 @@ LessonSets sets_of(const json& obj, const char* key, const std::string& origin, 
     out.emplace_back(it.key(), text);
   }
   return out;
-}
-
-/// "view": {"color_by": "vx", "panels": ["rho", "v"], "log": false, "profile_axis": "x"}
-LessonView view_of(const json& obj, const std::string& origin, const std::string& path) {
-  LessonView v;
-  if (!obj.contains("view")) return v;
-  const json& j = obj["view"];
-  const std::string p = path + "view";
-  if (!j.is_object()) fail(origin, p, "must be an object");
-  only_keys(j, {"color_by", "panels", "log", "profile_axis"}, origin, p);
-  v.color_by = text_of(j, "color_by", false, origin, p + ".");
-  if (j.contains("panels")) {
-    if (!j["panels"].is_array()) fail(origin, p + ".panels", "must be a list of fields ([]: the colour-by field alone)");
-    v.panels.emplace();
-    for (const json& f : j["panels"]) {
-      if (!f.is_string() || f.get<std::string>().empty()) fail(origin, p + ".panels", "every panel must name a field");
-      v.panels->push_back(f.get<std::string>());
-    }
-  }
-  if (j.contains("log")) {
-    if (!j["log"].is_boolean()) fail(origin, p + ".log", "must be true or false");
-    v.log = j["log"].get<bool>() ? 1 : 0;
-  }
-  v.profile_axis = text_of(j, "profile_axis", false, origin, p + ".");
-  if (!v.profile_axis.empty() && v.profile_axis != "off" && v.profile_axis != "x" && v.profile_axis != "y" &&
-      v.profile_axis != "r")
-    fail(origin, p + ".profile_axis", "'" + v.profile_axis + "' is not one of off, x, y, r (as --profile-axis)");
-  return v;
 }
 
 LessonCheck check_of(const json& c, const std::string& origin, const std::string& path) {
@@ -143,6 +87,17 @@ LessonCheck check_of(const json& c, const std::string& origin, const std::string
   return k;
 }
 
+/// "predict": {"question": "...", "answer": "..."}: both non-empty.
+void predict_of(const json& s, LessonStep& st, const std::string& origin, const std::string& p) {
+  if (!s.contains("predict")) return;
+  const json& q = s["predict"];
+  if (!q.is_object()) fail(origin, p + "predict", "must be an object {\"question\": ..., \"answer\": ...}");
+  only_keys(q, {"question", "answer"}, origin, p + "predict");
+  st.predict = text_of(q, "question", true, origin, p + "predict.");
+  st.answer = text_of(q, "answer", true, origin, p + "predict.");
+  if (st.predict.empty() || st.answer.empty()) fail(origin, p + "predict", "question and answer must not be empty");
+}
+
 /// Every run the check makes can be configured and measures a metric its scene has.
 void validate_runs(const LessonStep& st, const std::string& origin, const std::string& path) {
   std::vector<std::pair<LessonSets, std::string>> runs;  // extra sets, the key they come from
@@ -190,7 +145,8 @@ Lesson parse_lesson(const std::string& text, const std::string& origin) {
     const json& s = doc["steps"][i];
     const std::string path = "steps[" + std::to_string(i) + "]";
     if (!s.is_object()) fail(origin, path, "must be an object");
-    only_keys(s, {"title", "text", "scene", "set", "change", "look_at", "view", "check"}, origin, path);
+    only_keys(s, {"title", "text", "scene", "set", "change", "look_at", "view", "check", "predict", "pause_at"}, origin,
+              path);
     const std::string p = path + ".";
     LessonStep st;
     st.title = text_of(s, "title", true, origin, p);
@@ -204,7 +160,10 @@ Lesson parse_lesson(const std::string& text, const std::string& origin) {
     st.sets = sets_of(s, "set", origin, p);
     st.change = text_of(s, "change", false, origin, p);
     st.look_at = text_of(s, "look_at", false, origin, p);
-    st.view = view_of(s, origin, p);
+    st.view = lessons::view_of(s, origin, p);
+    predict_of(s, st, origin, p);
+    st.pause_at = number_of(s, "pause_at", -1.0, origin, p);
+    if (s.contains("pause_at") && !(st.pause_at > 0.0)) fail(origin, p + "pause_at", "must be a time > 0");
     if (!s.contains("check")) fail(origin, p + "check", "missing (every step makes a claim the program checks)");
     st.check = check_of(s["check"], origin, p + "check");
     validate_runs(st, origin, path);

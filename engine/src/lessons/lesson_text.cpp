@@ -22,6 +22,10 @@ std::string view_text(const LessonView& v) {
   }
   if (v.log >= 0) add(v.log == 1 ? "log10 scale" : "linear scale");
   if (!v.profile_axis.empty()) add(v.profile_axis == "off" ? "the plane view" : "profile along " + v.profile_axis);
+  if (v.range) add("range " + num(v.range->first) + " to " + num(v.range->second));
+  if (v.zoom) add("centre (" + num((*v.zoom)[0]) + ", " + num((*v.zoom)[1]) + "), zoom " + num((*v.zoom)[2]));
+  if (!v.cut.empty()) add("cutaway " + v.cut);
+  if (v.residuals >= 0) add(v.residuals == 1 ? "error strip" : "no error strip");
   return out;
 }
 
@@ -60,9 +64,11 @@ std::string lesson_text(const Lesson& l) {
     const LessonStep& st = l.steps[i];
     s += "\nStep " + std::to_string(i + 1) + "/" + std::to_string(l.steps.size()) + ": " + st.title + "\n";
     s += "  " + st.text + "\n";
+    if (!st.predict.empty()) s += "  predict first: " + st.predict + "\n  answer: " + st.answer + "\n";
     s += "  scene: " + st.scene + "  " + sets_text(st.sets) + "\n";
     if (!st.change.empty()) s += "  change: " + st.change + "\n";
     if (!st.look_at.empty()) s += "  look at: " + st.look_at + "\n";
+    if (st.pause_at > 0.0) s += "  pauses at t = " + num(st.pause_at) + "\n";
     if (const std::string v = view_text(st.view); !v.empty()) s += "  view: " + v + "\n";
     s += "  claim: " + claim_text(st) + "\n";
   }

@@ -136,6 +136,9 @@ void EngineLoop::apply(const Command& c) {
     case K::SetStopAtEnd:
       stop_at_end_ = c.flag;
       break;
+    case K::SetPauseAt:
+      pause_at_ = std::isfinite(c.value) && c.value > 0.0 ? c.value : 0.0;
+      break;
     case K::SetRecordInterval:
       start_recording(c.value);
       break;

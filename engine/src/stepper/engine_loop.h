@@ -61,6 +61,7 @@ class EngineLoop {
   std::uint64_t world_serial_ = 0, serial_ = 0, adopted_ = 0;
   bool running_ = false, at_end_ = false, stop_at_end_ = true, diverged_ = false;
   int single_steps_ = 0;
+  double pause_at_ = 0.0;              // pause when a step crosses this time (<= 0: never); Resume runs on
   std::int64_t tree_probe_ = -1;       // particle whose tree walk the frames carry (-1: none)
   std::int64_t diverged_particle_ = -1, diverged_step_ = -1;
   std::string error_;

@@ -16,7 +16,10 @@ void EngineLoop::step() {
   const double t = world_->time();
   const double t_end = world_->params().time.t_end;
   const bool end_ahead = stop_at_end_ && !reached(t, t_end);
+  // a pause time ahead (a lesson's "pause_at"): the step lands on it, and the run pauses there
+  const bool pause_ahead = pause_at_ > 0.0 && !reached(t, pause_at_);
   double dt_max = end_ahead ? t_end - t : 1e300;
+  if (pause_ahead) dt_max = std::min(dt_max, pause_at_ - t);
   try {
     // Frames land exactly on t0 + k every when they are at least a step apart; with steps longer than
     // the interval, shortening every step to it cost the run its speed (box_perturbed: 9.8 steps/s), so
@@ -71,6 +74,11 @@ void EngineLoop::step() {
   int record = -1;
   // the latest frame time reached (a long step may pass several)
   while (record_every_ > 0.0 && reached(world_->time(), record_t0_ + record_next_ * record_every_)) record = record_next_++;
+  if (pause_ahead && reached(world_->time(), pause_at_)) {
+    running_ = false;
+    single_steps_ = 0;
+    force = true;
+  }
   if (end_ahead && reached(world_->time(), t_end)) {
     running_ = false;
     at_end_ = true;

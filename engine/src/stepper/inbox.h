@@ -24,6 +24,7 @@ struct Command {
     SetSceneValue,     ///< `name` = `value`, then rebuild
     SetRealTimeFactor, ///< `value` simulated seconds per wall second (0 = as fast as possible)
     SetStopAtEnd,      ///< `flag`
+    SetPauseAt,        ///< `value`: pause when a step reaches this time (<= 0: never)
     SetRecordInterval, ///< `value` [time units], 0 = stop recording
     SetTreeProbe,      ///< `value`: the particle (snapshot index) whose tree walk frames carry; < 0 = none
     SetCompare,        ///< `names`: run B's overrides (key=value); empty = stop comparing

@@ -88,6 +88,7 @@ void Stepper::set_scene_value(const std::string& name, double value) {
 
 void Stepper::set_real_time_factor(double f) { impl_->inbox.push(make(Command::Kind::SetRealTimeFactor, f)); }
 void Stepper::set_stop_at_end(bool on) { impl_->inbox.push(make(Command::Kind::SetStopAtEnd, 0.0, on)); }
+void Stepper::set_pause_at(double t) { impl_->inbox.push(make(Command::Kind::SetPauseAt, t)); }
 void Stepper::set_tree_probe(std::int64_t k) {
   impl_->inbox.push(make(Command::Kind::SetTreeProbe, static_cast<double>(k)));
 }

@@ -171,6 +171,17 @@ if(MODE STREQUAL "lesson")
   if(NOT out MATCHES "last state: step [0-9]+, t = [0-9.e-]+\n")
     message(FATAL_ERROR "expected the step's scene on screen")
   endif()
+  # a step's question, its answer shown by key A, and its pause time (the run stops at t = 0.8 of 1)
+  execute_process(COMMAND ${XVFB_RUN} -a ${GUI} --lesson ${REPO}/assets/lessons/fpm_burgers.json --lesson-step 3
+                  --tap-keys 5:A --quit-after-frames 400 --config-dir ${OUT}/cfg
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err WORKING_DIRECTORY ${OUT})
+  message("${out}${err}")
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "lesson step 3 predicts: A centred fit" OR NOT out MATCHES "answer shown: The centred fit")
+    message(FATAL_ERROR "expected step 3's question, and its answer shown by key A")
+  endif()
+  if(NOT out MATCHES "last state: step [0-9]+, t = 0.8\n")
+    message(FATAL_ERROR "expected the run paused at the step's pause_at, t = 0.8")
+  endif()
   file(WRITE ${OUT}/false.json "{\"title\": \"x\", \"steps\": [{\"title\": \"s\", \"text\": \"t\", \"scene\": \"sod\", \"set\": {\"scene.n_left\": 100}, \"check\": {\"type\": \"below\", \"metric\": \"L1_rho\", \"until\": 0.05, \"limit\": 1e-6}}]}")
   execute_process(COMMAND ${XVFB_RUN} -a ${GUI} --lesson ${OUT}/false.json --lesson-check --quit-after-frames 10
                   --config-dir ${OUT}/cfg RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err WORKING_DIRECTORY ${OUT})

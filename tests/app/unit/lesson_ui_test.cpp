@@ -62,5 +62,28 @@ TEST(LessonUi, AStepPutsItsViewOnScreenAndLeavesTheRest) {
   EXPECT_EQ(view.profile_axis, -1);
 }
 
+TEST(LessonUi, AStepPutsItsRangeZoomCutawayAndErrorStrip) {
+  render::ViewSettings view;
+  LessonView step;
+  step.range = std::make_pair(0.1, 1.2);
+  step.zoom = std::array<double, 3>{0.25, -0.5, 4.0};
+  step.cut = "y=-0.25";
+  step.residuals = 1;
+  apply_step_view(step, view);
+  EXPECT_FALSE(view.auto_range);
+  EXPECT_FLOAT_EQ(view.range_min, 0.1f);
+  EXPECT_FLOAT_EQ(view.range_max, 1.2f);
+  EXPECT_FALSE(view.camera2d.fit);
+  EXPECT_FLOAT_EQ(view.camera2d.center_x, 0.25f);
+  EXPECT_FLOAT_EQ(view.camera2d.center_y, -0.5f);
+  EXPECT_FLOAT_EQ(view.camera2d.zoom, 4.f);
+  EXPECT_EQ(view.cut_axis, 1);
+  EXPECT_FLOAT_EQ(view.cut_at, -0.25f);
+  EXPECT_TRUE(view.residuals);
+  apply_step_view(LessonView{}, view);  // left open: as it was
+  EXPECT_FALSE(view.auto_range);
+  EXPECT_EQ(view.cut_axis, 1);
+}
+
 }  // namespace
 }  // namespace sph::gui
