@@ -1,6 +1,7 @@
 #include "view_scene.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "sph/compare.h"
 
@@ -19,6 +20,7 @@ std::vector<std::pair<std::string, double>> errors_of(const std::vector<RefColum
 render::Highlight highlight_of(const Inspection& in) {
   render::Highlight h;
   h.index = in.id;
+  h.support = std::isfinite(in.support) ? static_cast<float>(in.support) : 0.f;
   double wmax = 0.0;
   for (const InspectNeighbour& n : in.neighbour_list) wmax = std::max(wmax, n.W);
   for (const InspectNeighbour& n : in.neighbour_list)

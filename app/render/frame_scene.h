@@ -26,6 +26,7 @@ struct Highlight {
   int run = 0;              ///< 0: in the first snapshot, 1: in run B
   std::int64_t index = -1;  ///< snapshot index of the picked particle; < 0: nothing highlighted
   std::vector<std::pair<std::uint32_t, float>> neighbours;  ///< snapshot index, weight in [0, 1]
+  float support = 0.f;      ///< the picked particle's kernel support radius [length]; 0: not drawn
   bool operator==(const Highlight&) const = default;
 };
 

@@ -1,6 +1,7 @@
 #include "highlight.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -46,9 +47,43 @@ void ring(ShapeBatch& b, float cx, float cy, float r, float width, Rgba c) {
   b.polyline(xy, width, c);
 }
 
+/// The picked particle's kernel support: a circle of radius R in a plane view (the largest projection of R
+/// along the axes in 3D: the sphere's outline), an interval x +- R in a profile (along the plotted axis).
+void support_mark(ShapeBatch& b, const DrawnSet& s, std::size_t k, float R, bool profile, float width) {
+  const float* p = s.instances->data() + k * kInstanceFloats;
+  const auto to_px = [&](float x, float y, float z, float* px, float* py) {
+    const Vec4f c = s.camera->proj * (s.camera->view * Vec4f{x, y, z, 1.f});
+    if (!(c.w > 0.f)) return false;
+    *px = s.rect.x + (0.5f * c.x / c.w + 0.5f) * s.rect.w;
+    *py = s.rect.y + (0.5f - 0.5f * c.y / c.w) * s.rect.h;
+    return true;
+  };
+  float cx = 0.f, cy = 0.f;
+  if (!to_px(p[0], p[1], p[2], &cx, &cy)) return;
+  const Rgba colour = palette::kKernelSupport;
+  if (profile) {  // the interval the kernel reaches, with end ticks
+    float x0 = 0.f, x1 = 0.f, y = 0.f;
+    if (!to_px(p[0] - R, p[1], p[2], &x0, &y) || !to_px(p[0] + R, p[1], p[2], &x1, &y)) return;
+    const float tick = 4.f * width;
+    for (const std::array<float, 4>& seg : {std::array<float, 4>{x0, cy - tick, x0, cy + tick},
+                                            std::array<float, 4>{x0, cy, x1, cy},
+                                            std::array<float, 4>{x1, cy - tick, x1, cy + tick}})
+      b.polyline(seg, width, colour);
+    return;
+  }
+  float r = 0.f;
+  for (int axis = 0; axis < 3; ++axis) {
+    float q[3] = {p[0], p[1], p[2]};
+    q[axis] += R;
+    float px = 0.f, py = 0.f;
+    if (to_px(q[0], q[1], q[2], &px, &py)) r = std::max(r, std::hypot(px - cx, py - cy));
+  }
+  if (r > 1.f) ring(b, cx, cy, r, width, colour);
+}
+
 }  // namespace
 
-void add_highlight(FrameBuild& f, const Highlight& h) {
+void add_highlight(FrameBuild& f, const Highlight& h, bool profile) {
   if (h.index < 0) return;
   const int s = f.layout.text_scale;
   const float r0 = 5.f * static_cast<float>(s) + 2.f;
@@ -66,6 +101,7 @@ void add_highlight(FrameBuild& f, const Highlight& h) {
       if (static_cast<std::int64_t>(i) == h.index && pixel_of(set, k, &px, &py)) {
         ring(f.over, px, py, r0 + 2.f * s, 2.f * s + 2.f, palette::kOutlineHalo);
         ring(f.over, px, py, r0 + 2.f * s, 1.5f * s, palette::kText);
+        if (h.support > 0.f) support_mark(f.over, set, k, h.support, profile, 1.f * s);
       }
     }
   }

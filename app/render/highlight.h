@@ -1,5 +1,5 @@
-// The inspector's marks on the particle view, and picking: a ring around the picked particle, fainter
-// rings around its neighbours (their opacity and width grow with their kernel weight), wherever the
+// The inspector's marks on the particle view, and picking: a ring around the picked particle and the reach
+// of its kernel, fainter rings around its neighbours (their opacity and width grow with their kernel weight), wherever the
 // frame draws that run's particles (the plane, every profile panel); and which drawn particle is
 // nearest to a pixel.
 #pragma once
@@ -12,8 +12,9 @@
 
 namespace sph::render {
 
-/// Adds the rings of `h` to f.over (the primary particles belong to run 0).
-void add_highlight(FrameBuild& f, const Highlight& h);
+/// Adds the rings of `h` to f.over (the primary particles belong to run 0), and the picked particle's kernel
+/// support: a circle (plane and 3D views) or, in a profile, the interval x +- R along the plotted axis.
+void add_highlight(FrameBuild& f, const Highlight& h, bool profile);
 
 /// The particle drawn nearest to frame pixel (px, py), if one is within max_px of it.
 std::optional<Picked> pick_particle(const FrameBuild& f, float px, float py, float max_px);

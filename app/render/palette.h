@@ -26,5 +26,6 @@ inline constexpr Rgba kOutlines[8] = {
     {0.98f, 0.98f, 0.98f, 1.f}, {1.00f, 0.78f, 0.25f, 1.f}, {0.45f, 0.80f, 1.00f, 1.f}, {1.00f, 0.50f, 0.80f, 1.f},
     {0.55f, 0.90f, 0.45f, 1.f}, {1.00f, 0.45f, 0.35f, 1.f}, {0.75f, 0.60f, 1.00f, 1.f}, {0.30f, 0.85f, 0.80f, 1.f}};
 inline constexpr Rgba kOutlineHalo{0.04f, 0.04f, 0.05f, 1.f};  ///< dark rim under the outlines
+inline constexpr Rgba kKernelSupport{0.55f, 0.85f, 1.00f, 1.f};  ///< the inspected particle's kernel support
 
 }  // namespace sph::render::palette

@@ -160,7 +160,7 @@ void Renderer::compose(FrameBuild& f, const FrameScene& scene, const ViewSetting
     compose_plane(f, snap, view, shown);
   add_colorbar(f, bar);
   add_title(f, snap, shown);
-  add_highlight(f, scene.highlight);
+  add_highlight(f, scene.highlight, profile);
 }
 
 void Renderer::draw(Impl& d, const ShownField& shown, int width, int height) {

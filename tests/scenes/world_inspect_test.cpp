@@ -90,6 +90,9 @@ TEST(WorldInspect, NeighboursCarryTheSummationDensity) {
     EXPECT_GT(in->neighbour_list.size(), 3u);
     EXPECT_GE(in->h_iterations, 0.0);
     EXPECT_GT(in->omega, 0.5);
+    // the support drawn around it (M4: 2 h) holds every neighbour listed
+    EXPECT_DOUBLE_EQ(in->support, 2.0 * in->h);
+    for (const InspectNeighbour& n : in->neighbour_list) EXPECT_LE(n.r, in->support) << "id " << id;
   }
 }
 

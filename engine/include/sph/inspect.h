@@ -47,6 +47,7 @@ struct Inspection {
   // the run's values of its fields (NaN where the scene's stages do not allocate one)
   double m = 0.0, rho = 0.0, P = 0.0, u = 0.0, h = 0.0, omega = 0.0, c = 0.0, speed = 0.0;
   double neighbours = 0.0;    ///< inside its own support (self included), from the last evaluation
+  double support = 0.0;       ///< radius of its kernel's support, the kernel's support() times h [length]
   double h_iterations = 0.0;  ///< Newton-Raphson iterations of its last h solve
   double drhodt = 0.0;        ///< continuity rate [mass/(length^d time)]
   std::vector<InspectNeighbour> neighbour_list;

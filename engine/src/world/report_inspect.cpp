@@ -31,6 +31,7 @@ std::optional<Inspection> Report::inspect(std::int64_t id) const {
   out.speed = out.v.norm();
   out.m = in_.p[Field::Mass][i];
   out.h = in_.p[Field::H][i];
+  out.support = in_.kernel.support() * out.h;
   out.rho = field_or_nan(in_.p, Field::Density, i);
   out.P = field_or_nan(in_.p, Field::Pressure, i);
   out.u = field_or_nan(in_.p, Field::Energy, i);
