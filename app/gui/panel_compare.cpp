@@ -8,6 +8,7 @@
 
 #include <cstdio>
 
+#include "diag_text.h"
 #include "frame_scene.h"
 #include "panels.h"
 #include "sph/compare.h"
@@ -69,8 +70,9 @@ void panel_compare(GuiState& s) {
     const int k = f->ref_primary;
     if (k >= 0 && static_cast<std::size_t>(k) < f->ref_values.size() &&
         static_cast<std::size_t>(k) < f->compare.ref_values.size())
-      ImGui::Text("%s   A %.4g   B %.4g", f->ref_columns[static_cast<std::size_t>(k)].name.c_str(),
-                  f->ref_values[static_cast<std::size_t>(k)], f->compare.ref_values[static_cast<std::size_t>(k)]);
+      ImGui::Text("%s   A %s   B %s", f->ref_columns[static_cast<std::size_t>(k)].name.c_str(),
+                  value_text(f->ref_values[static_cast<std::size_t>(k)], 4).c_str(),
+                  value_text(f->compare.ref_values[static_cast<std::size_t>(k)], 4).c_str());
   }
 }
 

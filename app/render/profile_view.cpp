@@ -31,7 +31,7 @@ std::string legend_of(const std::string& label, const std::vector<std::pair<std:
                       const std::string& field) {
   double v = 0.0;
   const std::string column = error_column(errors, field, &v);
-  if (column.empty()) return label;
+  if (column.empty() || !std::isfinite(v)) return label;  // an error not defined yet: no number, never "nan"
   char buf[64];
   std::snprintf(buf, sizeof buf, "   %s = %.3g", column.c_str(), v);
   return label + buf;

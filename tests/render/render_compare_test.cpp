@@ -24,6 +24,14 @@ TEST_F(RenderCompare, ProfileShowsBothRunsInTheirColoursWithTheirL1) {
   EXPECT_EQ(layout().legend_rows[0], "exact");
   EXPECT_EQ(layout().legend_rows[1], "A: kernel.type=M4   L1_rho = 0.00304");
   EXPECT_EQ(layout().legend_rows[2], "B: kernel.type=M6   L1_rho = 0.0121");
+  {  // an error not defined yet (NaN): the label alone, never "nan"
+    FrameScene undefined = scene;
+    undefined.errors_b = {{"L1_rho", std::nan("")}};
+    render(undefined, ViewSettings{});
+    ASSERT_EQ(layout().legend_rows.size(), 3u);
+    EXPECT_EQ(layout().legend_rows[2], "B: kernel.type=M6");
+    render(scene, ViewSettings{});  // the frame the checks below look at
+  }
   EXPECT_EQ(layout().colorbar.w, 0.f);  // two colours, no colour map
   // where the runs differ, each run's dots are in its own colour at its own values
   const Pixel ca = to_pixel8(kRunColors[0]), cb = to_pixel8(kRunColors[1]);
