@@ -10,10 +10,14 @@ namespace sph::gui {
 void curve_plot(const char* id, const char* x_label, float x0, float x1, const std::vector<Curve>& curves,
                 ImVec2 size, bool include_zero) {
   if (size.x <= 0.f) size.x = ImGui::GetContentRegionAvail().x;
+  const float fh = ImGui::GetFontSize();
+  // tall enough for the legend inside the box and three value labels beside it (the legend of three
+  // curves ran over the tick labels under a short box)
+  const float legend_h = static_cast<float>(curves.size()) * (fh + 2.f) + 8.f;
+  size.y = std::max(size.y, std::max(legend_h, 3.f * fh + 4.f) + 4.f + 1.4f * fh);
   const ImVec2 p0 = ImGui::GetCursorScreenPos();
   ImGui::InvisibleButton(id, size);
   ImDrawList* dl = ImGui::GetWindowDrawList();
-  const float fh = ImGui::GetFontSize();
   const ImU32 axis = IM_COL32(150, 150, 160, 255), grid = IM_COL32(70, 70, 78, 255);
   // Value range over all curves (with 0 unless left out).
   float lo = include_zero ? 0.f : INFINITY, hi = include_zero ? 0.f : -INFINITY;
@@ -54,17 +58,43 @@ void curve_plot(const char* id, const char* x_label, float x0, float x1, const s
   char buf[32];
   dl->AddText(ImVec2(p0.x, a.y), axis, top.c_str());
   dl->AddText(ImVec2(p0.x, b.y - fh), axis, bottom.c_str());
-  if (include_zero && lo < -pad && hi > pad) dl->AddText(ImVec2(p0.x, Y(0.f) - 0.5f * fh), axis, "0");
+  // "0" where it leaves the top and bottom labels a line clear (at 0.053 of 0.76 it sat on "0.053")
+  if (include_zero && lo < -pad && hi > pad && Y(0.f) - 0.5f * fh > a.y + fh && Y(0.f) + 0.5f * fh < b.y - fh)
+    dl->AddText(ImVec2(p0.x, Y(0.f) - 0.5f * fh), axis, "0");
   if (!include_zero) dl->AddText(ImVec2(p0.x, 0.5f * (a.y + b.y) - 0.5f * fh), axis, middle.c_str());
-  for (int k = 0; k <= 6; k += 2) {
-    const float x = x0 + (x1 - x0) * k / 6.f;
-    std::snprintf(buf, sizeof buf, "%.3g", x);
-    const float tw = ImGui::CalcTextSize(buf).x;
-    dl->AddText(ImVec2(std::clamp(X(x) - 0.5f * tw, a.x, b.x - tw), b.y + 2.f), axis, buf);
+  // x tick labels at every second, third or sixth grid line, the densest that keep a space between
+  // them (at 1.5x four labels ran into each other), and the x label between the last two if it fits
+  const float gap = 0.5f * fh;
+  auto tick_text = [&](int k) {
+    std::snprintf(buf, sizeof buf, "%.3g", x0 + (x1 - x0) * k / 6.f);
+    return std::string(buf);
+  };
+  auto tick_left = [&](int k, float tw) { return std::clamp(X(x0 + (x1 - x0) * k / 6.f) - 0.5f * tw, a.x, b.x - tw); };
+  int every = 6;
+  for (int step : {2, 3}) {
+    bool fits = true;
+    float right = -INFINITY;
+    for (int k = 0; k <= 6 && fits; k += step) {
+      const float tw = ImGui::CalcTextSize(tick_text(k).c_str()).x, l = tick_left(k, tw);
+      fits = l >= right + gap;
+      right = l + tw;
+    }
+    if (fits) {
+      every = step;
+      break;
+    }
   }
-  // x label under the axis, between the last two tick labels
-  const float xs = ImGui::CalcTextSize(x_label).x;
-  dl->AddText(ImVec2(X(x0 + (x1 - x0) * 5.f / 6.f) - 0.5f * xs, b.y + 2.f), axis, x_label);
+  float last_right = a.x, prev_right = a.x, last_left = b.x;
+  for (int k = 0; k <= 6; k += every) {
+    const std::string t = tick_text(k);
+    const float tw = ImGui::CalcTextSize(t.c_str()).x, l = tick_left(k, tw);
+    dl->AddText(ImVec2(l, b.y + 2.f), axis, t.c_str());
+    prev_right = last_right;
+    last_left = l;
+    last_right = l + tw;
+  }
+  const float xs = ImGui::CalcTextSize(x_label).x, xm = 0.5f * (prev_right + last_left) - 0.5f * xs;
+  if (xm >= prev_right + gap && xm + xs <= last_left - gap) dl->AddText(ImVec2(xm, b.y + 2.f), axis, x_label);
   // Curves, clipped to the box.
   dl->PushClipRect(a, b, true);
   for (const Curve& c : curves) {
@@ -80,10 +110,19 @@ void curve_plot(const char* id, const char* x_label, float x0, float x1, const s
   // Legend, top right.
   float ly = a.y + 4.f;
   for (const Curve& c : curves) {
-    const float w = ImGui::CalcTextSize(c.label.c_str()).x;
-    const float lx = std::max(a.x + 4.f, b.x - w - 30.f);  // a long title stays inside the box
+    // a title too long for the box loses its " = value", then letters (the value labels give it)
+    const float room = b.x - a.x - 34.f;
+    std::string label = c.label;
+    if (ImGui::CalcTextSize(label.c_str()).x > room && label.find(" = ") != std::string::npos)
+      label = label.substr(0, label.find(" = "));
+    if (ImGui::CalcTextSize(label.c_str()).x > room) {
+      while (label.size() > 1 && ImGui::CalcTextSize((label + "..").c_str()).x > room) label.pop_back();
+      label += "..";
+    }
+    const float w = ImGui::CalcTextSize(label.c_str()).x;
+    const float lx = std::max(a.x + 4.f, b.x - w - 30.f);
     dl->AddLine(ImVec2(lx, ly + 0.5f * fh), ImVec2(lx + 20.f, ly + 0.5f * fh), c.color, 2.f);
-    dl->AddText(ImVec2(lx + 24.f, ly), IM_COL32(225, 225, 230, 255), c.label.c_str());
+    dl->AddText(ImVec2(lx + 24.f, ly), IM_COL32(225, 225, 230, 255), label.c_str());
     ly += fh + 2.f;
   }
 }

@@ -2,7 +2,10 @@
 // to change, and offers a reset (or keeping the broken state on screen to look at it, or saving it).
 #include <imgui.h>
 
+#include <algorithm>
+
 #include "panels.h"
+#include "ui_flow.h"
 
 namespace sph::gui {
 
@@ -18,7 +21,9 @@ void divergence_modal(GuiState& s) {
     ImGui::EndPopup();
     return;
   }
-  ImGui::PushTextWrapPos(ImGui::GetFontSize() * 34.f);
+  // lines of 34 characters' width, or narrower where the window is (3x text on 1280 px ran past its edge)
+  const float fs = ImGui::GetFontSize();
+  ImGui::PushTextWrapPos(std::min(fs * 34.f, ImGui::GetMainViewport()->Size.x - 4.f * fs));
   ImGui::TextUnformatted(f->error.c_str());
   if (f->diverged_particle >= 0)
     ImGui::Text("particle %lld, step %lld, t = %.6g", static_cast<long long>(f->diverged_particle),
@@ -35,11 +40,11 @@ void divergence_modal(GuiState& s) {
     s.acknowledged_divergence = f->world_serial;
     ImGui::CloseCurrentPopup();
   }
-  ImGui::SameLine();
+  same_line_if_fits(item_width_of("Save state"));
   if (ImGui::Button("Save state")) s.save_state(s.state_path);  // the broken state, to look at later
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Write the state as it is now to %s (a checkpoint; the State panel "
                                                 "loads it)", s.state_path.c_str());
-  ImGui::SameLine();
+  same_line_if_fits(item_width_of("Keep paused"));
   if (ImGui::Button("Keep paused")) {
     s.acknowledged_divergence = f->world_serial;
     ImGui::CloseCurrentPopup();

@@ -121,7 +121,7 @@ Layout build_ui(MainLoop& l, const StepperFrame* f, const StepperFrame** shown_o
   ImGui::NewFrame();
   const ImGuiIO& io = ImGui::GetIO();
   Layout L = compute_layout(static_cast<int>(io.DisplaySize.x), static_cast<int>(io.DisplaySize.y),
-                            ImGui::GetFontSize());
+                            ImGui::GetFontSize(), ImGui::GetStyle().WindowPadding.y);
   if (state.inspect_id >= 0) carve_inspector(L, ImGui::GetFontSize());
   draw_panels(state, L, l.stats);
   if (!io.WantTextInput && std::count(state.key_presses.begin(), state.key_presses.end(), GLFW_KEY_F12))

@@ -101,6 +101,8 @@ int parse_options(int argc, char** argv, GuiOptions* out) {
   app.add_option("--ui-scale", o.ui_scale, "projector mode: text and widgets at this scale, 1-3 (Ctrl+= / Ctrl+-)")
       ->check(CLI::Range(1.0, 3.0));
   app.add_flag("--high-contrast", o.high_contrast, "the high-contrast theme");
+  app.add_flag("--layout-report", o.layout_report,
+               "test hook: at exit, print the last frame's text that is clipped or overlaps other text");
   std::string pace;
   app.add_option("--auto-pace", pace, "on: slow a scene that would reach t_end in under 4 s of wall time to about 8 s "
                                       "(default: on unless the run is scripted); off: never")

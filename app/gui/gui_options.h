@@ -43,6 +43,7 @@ struct GuiOptions {
   bool lesson_check = false;         ///< run the step's check at once; its result is printed at exit
   float ui_scale = 1.f;              ///< projector mode: text and widgets at this scale (1-3)
   bool high_contrast = false;        ///< the high-contrast theme
+  bool layout_report = false;        ///< at exit, check the last frame's text for clipping and overlaps
   /// Slow scenes that would reach t_end in under 4 s of wall time to about 8 s: -1 = unless the run
   /// is scripted (--quit-after-frames, --quit-at-end, --record, --screenshot, --tap-keys), 0 off, 1 on.
   int auto_pace = -1;

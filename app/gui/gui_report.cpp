@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <string>
 
+#include "layout_check.h"
+#include "text_layout.h"
 #include "lesson_job.h"
 
 namespace sph::gui {
@@ -73,6 +75,20 @@ void report_exit(GuiState& state, const ParticleView& view, const Recorder& reco
               ImGui::GetFontSize(), atlas.TexWidth, atlas.TexHeight);
   if (!state.pace_note.empty()) std::printf("sph-gui: pace: %s\n", state.pace_note.c_str());
   report_lesson(state);
+}
+
+void report_layout(const ParticleView& view) {
+  const ImDrawData* dd = ImGui::GetDrawData();
+  if (dd == nullptr) return;
+  // the windows whose content scrolls: a line cut at their bottom edge is not a layout fault
+  const std::vector<std::string> scrolling = {"SPH sandbox", "Diagnostics", "Kernel explorer", "Particle inspector",
+                                              "Help:"};
+  const LayoutReport r = check_layout(*dd, *ImGui::GetIO().Fonts, scrolling);
+  std::printf("sph-gui: layout: %s\n", layout_text(r).c_str());
+  const render::FrameLayout& frame = view.layout();
+  const render::TextLayoutReport v =
+      render::check_text(view.texts(), static_cast<float>(frame.width), static_cast<float>(frame.height));
+  std::printf("sph-gui: view text: %s\n", render::text_layout_text(v).c_str());
 }
 
 }  // namespace sph::gui

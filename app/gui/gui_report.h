@@ -11,6 +11,9 @@
 
 namespace sph::gui {
 
+/// The last frame's text that is clipped or overlaps other text (--layout-report; layout_check.h).
+void report_layout(const ParticleView& view);
+
 /// The exit report on stdout; `applied` is the UI look in use, `threads` the engine's. Waits for the
 /// lesson step's check.
 void report_exit(GuiState& state, const ParticleView& view, const Recorder& recorder, const FrameStats& stats,

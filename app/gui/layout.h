@@ -14,7 +14,7 @@ struct Layout {
   Rect controls;     ///< scene, run, parameters, display
   Rect view;         ///< the particle view (renderer output)
   Rect diagnostics;  ///< energies, momentum, L1 error against time
-  Rect kernel;       ///< kernel explorer
+  Rect kernel;       ///< kernel explorer (empty where the diagnostics need the whole row)
   Rect status;       ///< one status line
   Rect inspector;    ///< the particle inspector, when open (carve_inspector); empty otherwise
 };
@@ -22,7 +22,8 @@ struct Layout {
 /// Gives the particle inspector a column at the right of the view (about 30 lines of text wide).
 void carve_inspector(Layout& L, float line_height);
 
-/// line_height: the UI font's height [px] (16 at UI scale 1; the controls column widens with it).
-Layout compute_layout(int width, int height, float line_height);
+/// line_height: the UI font's height [px] (16 at UI scale 1; the controls column widens with it);
+/// pad_y: the windows' vertical padding [px] (the status line holds one line between two paddings).
+Layout compute_layout(int width, int height, float line_height, float pad_y = 6.f);
 
 }  // namespace sph::gui

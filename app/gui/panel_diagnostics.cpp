@@ -151,9 +151,14 @@ void panel_diagnostics(GuiState& s) {
   const std::vector<DiagRow> rows = diag_rows(*f, dE, P, L, compare);
   // Columns as wide as their widest text, so that no value runs into the plots.
   const DiagWidths w = diag_widths(rows, [](const std::string& t) { return ImGui::CalcTextSize(t.c_str()).x; });
-  const float pad = ImGui::GetStyle().CellPadding.x;
+  const float pad = ImGui::GetStyle().CellPadding.x, values_w = w.name + w.value + 6.f * pad;
+  if (values_w > 0.45f * ImGui::GetContentRegionAvail().x) {  // narrow (projector mode): numbers, then plots
+    numbers_table(rows, w);
+    diag_plots(*f, compare, P);
+    return;
+  }
   if (!ImGui::BeginTable("diag", 2, ImGuiTableFlags_SizingStretchProp)) return;
-  ImGui::TableSetupColumn("values", ImGuiTableColumnFlags_WidthFixed, w.name + w.value + 6.f * pad);
+  ImGui::TableSetupColumn("values", ImGuiTableColumnFlags_WidthFixed, values_w);
   ImGui::TableSetupColumn("plots", ImGuiTableColumnFlags_WidthStretch);
   ImGui::TableNextRow();
   ImGui::TableNextColumn();

@@ -9,6 +9,7 @@
 
 #include "lesson_job.h"
 #include "panels.h"
+#include "ui_flow.h"
 
 namespace sph::gui {
 
@@ -132,13 +133,13 @@ void panel_lesson(GuiState& s) {
   ImGui::BeginDisabled(L.step == 0);
   if (ImGui::Button("< Previous")) show_lesson_step(s, L.step - 1);
   ImGui::EndDisabled();
-  ImGui::SameLine();
+  same_line_if_fits(item_width_of("Next >"));
   ImGui::BeginDisabled(L.step + 1 >= n);
   if (ImGui::Button("Next >")) show_lesson_step(s, L.step + 1);
   ImGui::EndDisabled();
-  ImGui::SameLine();
+  same_line_if_fits(item_width_of("Load again"));
   if (ImGui::Button("Load again")) show_lesson_step(s, L.step);
-  ImGui::SameLine();
+  same_line_if_fits(item_width_of("Check"));
   const bool running = L.job && L.job->poll();
   ImGui::BeginDisabled(running);
   if (ImGui::Button("Check")) check_lesson_step(s);

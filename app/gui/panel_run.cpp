@@ -11,16 +11,25 @@
 #include <GLFW/glfw3.h>
 
 #include "panels.h"
+#include "ui_flow.h"
 
 namespace sph::gui {
 namespace {
 
 /// Pause and scrub: while paused, a slider (and Left / Right) over the stored frames; view-only, Play
-/// returns to the live run.
+/// returns to the live run. Running, the row stays, greyed: the panel does not move by a row when a run
+/// stops (a click meant for visc.beta landed on visc.alpha).
 void scrub_slider(GuiState& s) {
   const StepperFrame* f = s.frame();
   const int n = static_cast<int>(s.ring.size());
-  if (!f || f->running || n < 2) return;
+  if (!f || f->running || n < 2) {
+    ImGui::BeginDisabled();
+    int none = 0;
+    ImGui::SetNextItemWidth(-ImGui::GetFontSize() * 4.f);
+    ImGui::SliderInt("scrub", &none, 0, 1, f && f->running ? "(pause to look back)" : "(no frames yet)");
+    ImGui::EndDisabled();
+    return;
+  }
   int k = s.scrub < 0 ? n - 1 : s.scrub;
   if (!ImGui::GetIO().WantTextInput)
     for (int key : s.key_presses) {
@@ -71,7 +80,7 @@ void picture_controls(GuiState& s) {
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("PNG frames of the particle view at fixed simulated-time intervals:\n"
                       "DIR/frame_00000.png, ... (the same files as `sph run --frames`)");
-  ImGui::SameLine();
+  same_line_if_fits(item_width_of("recording settings") + ImGui::GetTreeNodeToLabelSpacing());
   if (!ImGui::TreeNode("recording settings")) return;
   if (s.recording) ImGui::BeginDisabled();
   ImGui::InputText("dir", &s.record_dir);

@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include "panels.h"
+#include "ui_flow.h"
 #include "param_help.h"
 #include "scene_text.h"
 
@@ -16,7 +18,13 @@ void panel_scene(GuiState& s) {
   const StepperFrame* f = s.frame();
   const SceneSpec* current = f ? f->config.scene : nullptr;
   const std::string preview = current ? current->name + "  (" + std::to_string(current->dim) + "D)" : "(loading)";
-  if (ImGui::BeginCombo("scene", preview.c_str())) {
+  // the combo as wide as its scene's name needs, the rest of the line for "scene" and Help
+  const ImGuiStyle& st = ImGui::GetStyle();
+  const float need = ImGui::CalcTextSize(preview.c_str()).x + 2.f * st.FramePadding.x + ImGui::GetFrameHeight();
+  const float rest = item_width_of("scene") + item_width_of("Help") + 2.f * st.ItemSpacing.x;
+  ImGui::SetNextItemWidth(std::min(std::max(need, ImGui::CalcItemWidth()), ImGui::GetContentRegionAvail().x));
+  const bool label_fits = ImGui::GetContentRegionAvail().x >= std::max(need, ImGui::CalcItemWidth()) + rest;
+  if (ImGui::BeginCombo(label_fits ? "scene" : "##scene", preview.c_str())) {
     for (const SceneSpec& spec : scene_registry()) {
       const std::string item = spec.name + "  (" + std::to_string(spec.dim) + "D)";
       if (ImGui::Selectable(item.c_str(), &spec == current)) {
@@ -27,7 +35,7 @@ void panel_scene(GuiState& s) {
     }
     ImGui::EndCombo();
   }
-  ImGui::SameLine();
+  same_line_if_fits(item_width_of("Help"));
   if (ImGui::SmallButton("Help")) s.help.open = !s.help.open;
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("The scene's stages, every parameter (unit, range, default, seed equation),\n"
                                                 "its reference and error norms: what `sph help SCENE` prints (F1 or H)");
@@ -36,9 +44,17 @@ void panel_scene(GuiState& s) {
     ImGui::TextDisabled("%s: %s", current->category.c_str(), describe_scene(*current, f->config.values).c_str());
     ImGui::PopTextWrapPos();
   }
-  const std::string hint = scene_file_hint(s.scene_name());
+  std::string hint = scene_file_hint(s.scene_name());
+  // the file field beside its button where the hint fits in it, else a line of its own
+  const float button = item_width_of("Open file"), spacing = ImGui::GetStyle().ItemSpacing.x;
+  const float beside = ImGui::GetContentRegionAvail().x - button - spacing;
+  const bool one_line = ImGui::CalcTextSize(hint.c_str()).x + 2.f * ImGui::GetStyle().FramePadding.x <= beside;
+  const float field = one_line ? beside : ImGui::GetContentRegionAvail().x;
+  if (ImGui::CalcTextSize(hint.c_str()).x + 2.f * ImGui::GetStyle().FramePadding.x > field)
+    hint = std::filesystem::path(hint).filename().string();  // the path does not fit: its file name
+  ImGui::SetNextItemWidth(field);
   ImGui::InputTextWithHint("##file", hint.c_str(), &s.file_path);
-  ImGui::SameLine();
+  if (one_line) ImGui::SameLine();
   if (ImGui::Button("Open file") && !s.file_path.empty()) s.open_file(s.file_path);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("A JSON scene file: {\"scene\": NAME, \"params\": {key: value, ...}},\n"
                                                 "or an HDF5 initial condition in the SWIFT/GADGET layout (.hdf5)");

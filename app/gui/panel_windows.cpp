@@ -36,9 +36,11 @@ void draw_panels(GuiState& s, const Layout& L, const FrameStats& stats) {
   place(L.diagnostics);
   if (ImGui::Begin("Diagnostics", nullptr, fixed)) panel_diagnostics(s);
   ImGui::End();
-  place(L.kernel);
-  if (ImGui::Begin("Kernel explorer  (seed 000, Figs. 3.1-3.4)", nullptr, fixed)) panel_kernel(s);
-  ImGui::End();
+  if (L.kernel.w > 0.f) {  // not shown where the text is too large for it beside the diagnostics
+    place(L.kernel);
+    if (ImGui::Begin("Kernel explorer", nullptr, fixed)) panel_kernel(s);
+    ImGui::End();
+  }
   place(L.status);
   if (ImGui::Begin("##status", nullptr, fixed | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar))
     status_line(s, stats);

@@ -59,7 +59,17 @@ void param_tooltip(const ParamInfo& info) {
 bool param_widget(const ParamInfo& info, Params& p, bool pending, std::string* err,
                   const std::vector<std::string>& allowed) {
   const std::string key(info.key);
-  const std::string label = key + (info.live ? "" : pending ? "  (reset!)" : "  (reset)");
+  const std::string full_label = key + (info.live ? "" : pending ? "  (reset!)" : "  (reset)");
+  // A label longer than the column beside the widgets goes on its own line above a full-width widget
+  // (it was cut: "physics.smoothin", "physics.eos (rese" at 1x; every label at 3x).
+  const float column = ImGui::GetContentRegionAvail().x - ImGui::CalcItemWidth() - ImGui::GetStyle().ItemInnerSpacing.x;
+  const bool stacked = ImGui::CalcTextSize(full_label.c_str()).x > column;
+  if (stacked) {
+    ImGui::TextUnformatted(full_label.c_str());
+    param_tooltip(info);
+    ImGui::PushItemWidth(-1.f);
+  }
+  const std::string label = stacked ? "##" + key : full_label;
   const std::string current = info.get(p);
   bool changed = false;
   std::string text;
@@ -118,6 +128,7 @@ bool param_widget(const ParamInfo& info, Params& p, bool pending, std::string* e
     if (changed) text = format(v);
   }
   if (pending) ImGui::PopStyleColor();
+  if (stacked) ImGui::PopItemWidth();
   param_tooltip(info);
   if (!changed || text == current) return false;
   if (!info.set(p, text, *err)) return false;

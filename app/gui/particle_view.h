@@ -51,6 +51,8 @@ class ParticleView {
   /// Where particle `index` of run 0 (A) or 1 (B) is on screen [window px, ImGui's mouse coordinates].
   std::optional<std::array<float, 2>> window_pos_of(int run, std::uint32_t index, const Rect& r) const;
   const render::FrameLayout& layout() const { return renderer_.last_layout(); }
+  /// The text of the last picture drawn, with its boxes (layout checks).
+  const std::vector<render::TextSpan>& texts() const { return renderer_.last_texts(); }
   /// Step and time of the snapshot the view on screen was rendered from (-1 before any).
   long long drawn_step() const { return drawn_step_; }
   double drawn_time() const { return drawn_t_; }

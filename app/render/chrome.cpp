@@ -68,7 +68,8 @@ void add_title(FrameBuild& f, const sph::Snapshot& snap, const ShownField& shown
   float x = L.title.x;
   x += f.text.add(title, x, L.title.y, s, palette::kText);
   const std::string count = "   N = " + std::to_string(snap.count) + "  (" + std::to_string(snap.dim) + "D)";
-  x += f.text.add(count, x, L.title.y, s, palette::kDimText);
+  if (x + f.text.measure(count, s) <= L.title.right())  // only where it fits (a projector's 3x text: not)
+    x += f.text.add(count, x, L.title.y, s, palette::kDimText);
   if (!shown.warning.empty()) f.text.add(shown.warning, L.title.right(), L.title.y, s, palette::kWarning, Align::Right);
 }
 

@@ -44,17 +44,23 @@ void densify(std::span<const float> xy, float step, std::vector<float>* out) {
 bool add_legend(FrameBuild& f, const PixelRect& box, std::span<const LegendEntry> entries,
                 std::span<const float> avoid_xy, float clear, int text_scale) {
   if (entries.empty()) return false;
-  const int s = text_scale > 0 ? text_scale : f.layout.text_scale;
-  const float lh = f.text.line_height(s);
-  const float sample = 22.f * s;  // sample length [px]
-  const float pad = 6.f * s;
-  const float gap = 2.f * s;      // between rows [px]
-  float label_w = 0.f;
-  for (const LegendEntry& e : entries) label_w = std::max(label_w, f.text.measure(e.label, s));
+  // at the frame's text scale, or smaller where that does not fit the box (the A/B legend vanished from
+  // a short plot at 1280 x 720); none below scale 1
+  int s = text_scale > 0 ? text_scale : f.layout.text_scale;
+  float lh = 0.f, sample = 0.f, pad = 0.f, gap = 0.f, w = 0.f, h = 0.f;
   const float n = static_cast<float>(entries.size());
-  const float w = pad * 3 + sample + label_w;
-  const float h = pad * 2 + n * lh + (n - 1.f) * gap;
-  if (w > box.w - 2.f * pad || h > 0.5f * box.h) return false;
+  for (;; --s) {
+    lh = f.text.line_height(s);
+    sample = 22.f * s;  // sample length [px]
+    pad = 6.f * s;
+    gap = 2.f * s;  // between rows [px]
+    float label_w = 0.f;
+    for (const LegendEntry& e : entries) label_w = std::max(label_w, f.text.measure(e.label, s));
+    w = pad * 3 + sample + label_w;
+    h = pad * 2 + n * lh + (n - 1.f) * gap;
+    if (w <= box.w - 2.f * pad && h <= 0.5f * box.h) break;
+    if (s <= 1) return false;
+  }
   const PixelRect r = place_legend(box, w, h, pad, clear, avoid_xy);
   f.layout.legend = r;
   f.over.fill_rect(r, palette::kLegendFill);

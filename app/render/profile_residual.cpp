@@ -109,15 +109,17 @@ ProfilePanel residual_panel(const ProfilePanel& p, int axis) {
 
 std::size_t compose_with_residuals(FrameBuild& f, ProfilePanel p, const ViewSettings& view, const ShownField& shown,
                                    int axis, bool primary, bool residuals) {
-  // room for two boxes of a few lines each, else no strip
+  // the strip: its title, a box of at least 2.5 lines and the x labels; the profile keeps 10 lines (room for
+  // its legend) or there is no strip
   const float lh = f.text.line_height(f.layout.text_scale);
-  if (!residuals || !has_residuals(p) || p.area.h < 11.f * lh) {
+  const float strip = std::round(4.f * lh + std::max(2.5f * lh, 0.22f * p.area.h));
+  if (!residuals || !has_residuals(p) || p.area.h - strip < 10.f * lh) {
     compose_panel(f, p, view, shown, axis, primary);
     return f.batches.size();
   }
   const float gap = f.layout.margin;
   const PixelRect whole = p.area;
-  const float top = std::floor(0.62f * (whole.h - gap));  // the strip also holds the x labels
+  const float top = whole.h - strip - gap;
   p.area = {whole.x, whole.y, whole.w, top};
   p.x_labels = false;
   ProfilePanel r = residual_panel(p, axis);

@@ -81,6 +81,7 @@ Renderer::~Renderer() { shutdown(); }
 
 bool Renderer::initialized() const { return impl_->ready; }
 const FrameLayout& Renderer::last_layout() const { return impl_->frame.layout; }
+const std::vector<TextSpan>& Renderer::last_texts() const { return impl_->frame.text.spans(); }
 const GlApi& Renderer::gl() const { return impl_->gl; }
 void Renderer::set_particle_path(ParticlePath path) { impl_->particles.set_path(path); }
 bool Renderer::particles_on_cpu() const { return impl_->particles.uses_cpu(); }

@@ -19,6 +19,7 @@
 #include "frame_scene.h"
 #include "gl_api.h"
 #include "particle_path.h"
+#include "text_batch.h"
 #include "view_settings.h"
 
 namespace sph {
@@ -65,6 +66,8 @@ class Renderer {
 
   /// Where the last frame put its plot and colour bar, and its plot -> pixel mapping.
   const FrameLayout& last_layout() const;
+  /// Every line of text the last frame drew, with its box (layout checks: text_layout.h).
+  const std::vector<TextSpan>& last_texts() const;
   /// The loaded GL table (for readback and error checks by the caller).
   const GlApi& gl() const;
 

@@ -1,5 +1,6 @@
 // CPU-side text layout: glyph quads in frame pixels for the text.vert/.frag program.
 #pragma once
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -7,6 +8,12 @@
 #include "overlay_types.h"
 
 namespace sph::render {
+
+/// Where one line of text went: its box [px] (the glyphs' ink) and the text, for layout checks.
+struct TextSpan {
+  std::string text;
+  float x0 = 0.f, y0 = 0.f, x1 = 0.f, y1 = 0.f;
+};
 
 /// One vertex of text.vert: position [px], atlas coordinates, colour.
 struct TextVertex {
@@ -18,8 +25,12 @@ struct TextVertex {
 class TextBatch {
  public:
   explicit TextBatch(const FontAtlas& font) : font_(&font) {}
-  void clear() { vertices_.clear(); }
+  void clear() {
+    vertices_.clear();
+    spans_.clear();
+  }
   const std::vector<TextVertex>& vertices() const { return vertices_; }
+  const std::vector<TextSpan>& spans() const { return spans_; }
 
   /// Draws one line of text; (x, y_top) is the anchor on the top edge of the line, aligned by `align`.
   /// `scale` is an integer pixel scale of the 13 px font. Returns the text width [px].
@@ -30,6 +41,7 @@ class TextBatch {
  private:
   const FontAtlas* font_;
   std::vector<TextVertex> vertices_;
+  std::vector<TextSpan> spans_;
 };
 
 }  // namespace sph::render

@@ -10,7 +10,10 @@
 #          and the inspector's numbers are the engine's (INSPECT_CHECK);
 #   click: a click on a particle's dot opens the inspector on it;
 #   state: a checkpoint of `sph run` loads with --load-state at its step and time; a CSV given instead exits 3;
-#   push:  a right drag (--push-drag) pushes the gas along the drag.
+#   push:  a right drag (--push-drag) pushes the gas along the drag;
+#   layout: sod (A/B), dam_break, evrard and the blow-up dialog at 1280x720 and 1600x900, UI scale 1, 1.5, 2
+#          and 3: no text of the controls, status line, dialogs, plots or the particle view is cut or drawn
+#          over other text (--layout-report: layout_check.h, text_layout.h).
 file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT})
 
@@ -277,5 +280,30 @@ if(MODE STREQUAL "push")
   string(REGEX REPLACE "^-" "" apy "${py}")
   if(NOT px GREATER 0.01 OR NOT apy LESS 0.01)  # if() compares numbers as doubles
     message(FATAL_ERROR "expected momentum along the drag: P = (${px}, ${py})")
+  endif()
+endif()
+
+if(MODE STREQUAL "layout")
+  set(faults "")
+  # the blow-up dialog: sod at a fixed dt far too long diverges at its first step
+  foreach(scene "sod;--compare-set;kernel.type=M6" "dam_break" "evrard" "sod;--set;time.dt=0.05")
+    foreach(size 1280x720 1600x900)
+      foreach(scale 1 1.5 2 3)
+        execute_process(COMMAND ${XVFB_RUN} -a -s "-screen 0 ${size}x24" ${GUI} --scene ${scene} --size ${size}
+                        --ui-scale ${scale} --quit-after-frames 40 --layout-report --config-dir ${OUT}/cfg
+                        RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err WORKING_DIRECTORY ${OUT})
+        list(GET scene 0 name)
+        string(REGEX MATCH "layout: [^\n]*(\n  [^\n]*)*" ui "${out}")
+        string(REGEX MATCH "view text: [^\n]*(\n  [^\n]*)*" view "${out}")
+        message("${name} ${size} x${scale}: ${ui}\n  ${view}")
+        if(NOT rc EQUAL 0 OR NOT ui MATCHES "glyphs, 0 clipped, 0 overlapping" OR
+           NOT view MATCHES "lines, 0 cut at the frame's edge, 0 overlapping")
+          string(APPEND faults "\n${name} ${size} x${scale} (exit ${rc}): ${ui}\n  ${view}")
+        endif()
+      endforeach()
+    endforeach()
+  endforeach()
+  if(NOT faults STREQUAL "")
+    message(FATAL_ERROR "text cut or overlapping:${faults}")
   endif()
 endif()

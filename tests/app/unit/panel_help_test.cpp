@@ -9,24 +9,15 @@
 
 #include "gui_state.h"
 #include "panels.h"
+#include "imgui_context.h"
 #include "sph/help_text.h"
 
 namespace sph::gui {
 namespace {
 
-class PanelHelp : public ::testing::Test {
+class PanelHelp : public test::ImGuiTest {
  protected:
-  void SetUp() override {
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;
-    io.DisplaySize = ImVec2(1200.f, 800.f);
-    io.DeltaTime = 1.f / 60.f;
-    unsigned char* pixels = nullptr;
-    int w = 0, h = 0;
-    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
-  }
-  void TearDown() override { ImGui::DestroyContext(); }
+  void SetUp() override { start(1200.f, 800.f); }
 
   void frame(GuiState& s, std::vector<int> keys) {
     s.key_presses = std::move(keys);

@@ -8,6 +8,7 @@
 
 #include <string>
 
+#include "imgui_context.h"
 #include "param_widgets.h"
 
 namespace sph::gui {
@@ -15,24 +16,17 @@ namespace {
 
 constexpr int kEnter = 13, kKeyA = 'A';
 
-class ParamWidget : public ::testing::Test {
+class ParamWidget : public test::ImGuiTest {
  protected:
   void SetUp() override {
-    ImGui::CreateContext();
+    start(900.f, 400.f);
     ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;
-    io.DisplaySize = ImVec2(900.f, 400.f);
-    io.DeltaTime = 1.f / 60.f;
     io.KeyMap[ImGuiKey_Enter] = kEnter;
     io.KeyMap[ImGuiKey_A] = kKeyA;
-    unsigned char* pixels = nullptr;
-    int w = 0, h = 0;
-    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
     p_.time.cfl = 0.25;
     p_.visc.eps = 0.01;
     frame();  // layout: where the slider and the field are
   }
-  void TearDown() override { ImGui::DestroyContext(); }
 
   /// One frame with the widget of `key_`; records the slider's and the field's rectangles.
   void frame() {

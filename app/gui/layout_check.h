@@ -1,0 +1,33 @@
+// Text layout checks on what Dear ImGui drew (the layout tests): every glyph quad of a frame's draw data,
+// found by its texture coordinates in the font atlas, is checked for being cut by its clip rectangle
+// (horizontally: a label cut by its column or window; vertically only in windows that cannot scroll, such
+// as the status line) and for overlapping a glyph of other text of its window (a dialog lies over the
+// windows by design). Tooltips, which follow the mouse, are left out.
+#pragma once
+#include <string>
+#include <vector>
+
+struct ImDrawData;
+struct ImFontAtlas;
+
+namespace sph::gui {
+
+struct LayoutProblem {
+  std::string window;  ///< the draw list's owner (window name)
+  std::string text;    ///< the text around the glyph, as drawn on its line
+  float x = 0.f, y = 0.f;  ///< where [px]
+};
+
+struct LayoutReport {
+  int glyphs = 0;
+  std::vector<LayoutProblem> clipped, overlapping;
+};
+
+/// Checks the frame's draw data. `scrolling` names the windows whose content may scroll (their vertical
+/// cuts are not problems).
+LayoutReport check_layout(const ImDrawData& dd, const ImFontAtlas& atlas, const std::vector<std::string>& scrolling);
+
+/// "N glyphs, C clipped, O overlapping" and the first few problems, one per line.
+std::string layout_text(const LayoutReport& r, std::size_t max_listed = 8);
+
+}  // namespace sph::gui
