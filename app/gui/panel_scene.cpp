@@ -13,12 +13,11 @@
 #include "scene_text.h"
 
 namespace sph::gui {
+namespace {
 
-void panel_scene(GuiState& s) {
-  const StepperFrame* f = s.frame();
-  const SceneSpec* current = f ? f->config.scene : nullptr;
+/// The scene picker, as wide as the scene's name needs; its label only where the line has room.
+void scene_combo(GuiState& s, const SceneSpec* current) {
   const std::string preview = current ? current->name + "  (" + std::to_string(current->dim) + "D)" : "(loading)";
-  // the combo as wide as its scene's name needs, the rest of the line for "scene" and Help
   const ImGuiStyle& st = ImGui::GetStyle();
   const float need = ImGui::CalcTextSize(preview.c_str()).x + 2.f * st.FramePadding.x + ImGui::GetFrameHeight();
   const float rest = item_width_of("scene") + item_width_of("Help") + 2.f * st.ItemSpacing.x;
@@ -35,17 +34,11 @@ void panel_scene(GuiState& s) {
     }
     ImGui::EndCombo();
   }
-  same_line_if_fits(item_width_of("Help"));
-  if (ImGui::SmallButton("Help")) s.help.open = !s.help.open;
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("The scene's stages, every parameter (unit, range, default, seed equation),\n"
-                                                "its reference and error norms: what `sph help SCENE` prints (F1 or H)");
-  if (current) {
-    ImGui::PushTextWrapPos(0.f);
-    ImGui::TextDisabled("%s: %s", current->category.c_str(), describe_scene(*current, f->config.values).c_str());
-    ImGui::PopTextWrapPos();
-  }
+}
+
+/// The scene file field beside its button where the hint fits in it, else a line of its own.
+void file_row(GuiState& s) {
   std::string hint = scene_file_hint(s.scene_name());
-  // the file field beside its button where the hint fits in it, else a line of its own
   const float button = item_width_of("Open file"), spacing = ImGui::GetStyle().ItemSpacing.x;
   const float beside = ImGui::GetContentRegionAvail().x - button - spacing;
   const bool one_line = ImGui::CalcTextSize(hint.c_str()).x + 2.f * ImGui::GetStyle().FramePadding.x <= beside;
@@ -56,6 +49,24 @@ void panel_scene(GuiState& s) {
   ImGui::InputTextWithHint("##file", hint.c_str(), &s.file_path);
   if (one_line) ImGui::SameLine();
   if (ImGui::Button("Open file") && !s.file_path.empty()) s.open_file(s.file_path);
+}
+
+}  // namespace
+
+void panel_scene(GuiState& s) {
+  const StepperFrame* f = s.frame();
+  const SceneSpec* current = f ? f->config.scene : nullptr;
+  scene_combo(s, current);
+  same_line_if_fits(item_width_of("Help"));
+  if (ImGui::SmallButton("Help")) s.help.open = !s.help.open;
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("The scene's stages, every parameter (unit, range, default, seed equation),\n"
+                                                "its reference and error norms: what `sph help SCENE` prints (F1 or H)");
+  if (current) {
+    ImGui::PushTextWrapPos(0.f);
+    ImGui::TextDisabled("%s: %s", current->category.c_str(), describe_scene(*current, f->config.values).c_str());
+    ImGui::PopTextWrapPos();
+  }
+  file_row(s);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("A JSON scene file: {\"scene\": NAME, \"params\": {key: value, ...}},\n"
                                                 "or an HDF5 initial condition in the SWIFT/GADGET layout (.hdf5)");
   if (s.recent && !s.recent->files().empty()) {

@@ -116,19 +116,9 @@ void EngineLoop::apply(const Command& c) {
       if (world_ && at_end_ && stop_at_end_ && reached(world_->time(), world_->params().time.t_end)) break;
       if (world_ && !diverged_) ++single_steps_;
       break;
-    case K::SetSceneValue: {
-      if (cfg_.scene == nullptr) { error_ = "no scene is loaded"; break; }
-      RunConfig nc = cfg_;
-      if (world_) nc.params = world_->params();
-      try {
-        nc.set("scene." + c.name, format(c.value), "scene value");
-      } catch (const std::exception& e) {
-        error_ = e.what();
-        break;
-      }
-      rebuild(nc);
+    case K::SetSceneValue:
+      set_scene_value(c.name, c.value);
       break;
-    }
     case K::SetRealTimeFactor:
       rtf_ = std::isfinite(c.value) ? std::max(0.0, c.value) : 0.0;
       anchor_pacing();
@@ -163,6 +153,22 @@ void EngineLoop::apply(const Command& c) {
       if (world_) world_->set_push(c.push);  // run A only: the comparison's run B is not pushed
       break;
   }
+}
+
+void EngineLoop::set_scene_value(const std::string& name, double value) {
+  if (cfg_.scene == nullptr) {
+    error_ = "no scene is loaded";
+    return;
+  }
+  RunConfig nc = cfg_;
+  if (world_) nc.params = world_->params();
+  try {
+    nc.set("scene." + name, format(value), "scene value");
+  } catch (const std::exception& e) {
+    error_ = e.what();
+    return;
+  }
+  rebuild(nc);
 }
 
 void EngineLoop::adopt(const InboxBatch& b) {

@@ -37,6 +37,7 @@ class EngineLoop {
   static bool reached(double t, double target) { return t >= target - 1e-12 * std::max(1.0, std::abs(target)); }
 
   void apply(const Command& c);          // one command; true state changes only
+  void set_scene_value(const std::string& name, double value);  // scene.NAME = value, then rebuild
   void adopt(const InboxBatch& b);       // mailbox params
   /// New World (with `state`: restored from a checkpoint, World::restore_state); keeps the old one if
   /// the build or the restore throws.
