@@ -12,6 +12,28 @@
 namespace sph::gui {
 namespace {
 
+/// Text line by line, each wrapped at the window's edge and its continuation under the line's own
+/// indentation (the help's lines ran past the window, behind a horizontal scroll bar).
+void wrapped_lines(const std::string& text) {
+  const float space = ImGui::CalcTextSize(" ").x;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string line = text.substr(start, end - start);
+    const std::size_t lead = line.find_first_not_of(' ');
+    if (lead == std::string::npos) {
+      ImGui::NewLine();
+    } else {
+      const float indent = space * static_cast<float>(lead);
+      if (indent > 0.f) ImGui::Indent(indent);
+      ImGui::TextWrapped("%s", line.c_str() + lead);
+      if (indent > 0.f) ImGui::Unindent(indent);
+    }
+    start = end + 1;
+  }
+}
+
 /// Every key and mouse action of the window (README "The desktop program").
 constexpr const char* kKeys[][2] = {
     {"Space", "play / pause (at t_end with 'stop at t_end': replay from t = 0)"},
@@ -56,19 +78,25 @@ void panel_help(GuiState& s) {
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   ImGui::SetNextWindowSize(ImVec2(vp->Size.x * 0.55f, vp->Size.y * 0.75f), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + vp->Size.x * 0.4f, vp->Pos.y + vp->Size.y * 0.1f), ImGuiCond_FirstUseEver);
-  if (ImGui::Begin("Help: keys, the scene, its stages and parameters  (F1)", &h.open, ImGuiWindowFlags_HorizontalScrollbar)) {
+  if (ImGui::Begin("Help  (F1)", &h.open)) {  // a short title: the window is narrow at a projector's scale
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+    ImGui::TextWrapped("Keys, then the scene, its stages and parameters (sph help %s)",
+                       h.scene ? h.scene->name.c_str() : "SCENE");
+    ImGui::PopStyleColor();
     if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
+      ImGui::TableSetupColumn("key", ImGuiTableColumnFlags_WidthFixed);
+      ImGui::TableSetupColumn("action", ImGuiTableColumnFlags_WidthStretch);
       for (const auto& k : kKeys) {
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(k[0]);
         ImGui::TableNextColumn();
-        ImGui::TextUnformatted(k[1]);
+        ImGui::TextWrapped("%s", k[1]);
       }
       ImGui::EndTable();
     }
     ImGui::Separator();
-    ImGui::TextUnformatted(h.text.c_str());
+    wrapped_lines(h.text);  // `sph help`'s text, each line wrapped at the window's edge under its indent
   }
   ImGui::End();
 }

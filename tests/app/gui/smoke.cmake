@@ -11,9 +11,9 @@
 #   click: a click on a particle's dot opens the inspector on it;
 #   state: a checkpoint of `sph run` loads with --load-state at its step and time; a CSV given instead exits 3;
 #   push:  a right drag (--push-drag) pushes the gas along the drag;
-#   layout: sod (A/B), dam_break, evrard and the blow-up dialog at 1280x720 and 1600x900, UI scale 1, 1.5, 2
-#          and 3: no text of the controls, status line, dialogs, plots or the particle view is cut or drawn
-#          over other text (--layout-report: layout_check.h, text_layout.h).
+#   layout: sod (A/B), dam_break, evrard, the blow-up dialog and the help (F1) at 1280x720 and 1600x900,
+#          UI scale 1, 1.5, 2 and 3: no text of the controls, status line, dialogs, plots or the particle
+#          view is cut or drawn over other text (--layout-report: layout_check.h, text_layout.h).
 file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT})
 
@@ -286,7 +286,7 @@ endif()
 if(MODE STREQUAL "layout")
   set(faults "")
   # the blow-up dialog: sod at a fixed dt far too long diverges at its first step
-  foreach(scene "sod;--compare-set;kernel.type=M6" "dam_break" "evrard" "sod;--set;time.dt=0.05")
+  foreach(scene "sod;--compare-set;kernel.type=M6" "dam_break" "evrard" "sod;--set;time.dt=0.05" "sod;--tap-keys;5:H")
     foreach(size 1280x720 1600x900)
       foreach(scale 1 1.5 2 3)
         execute_process(COMMAND ${XVFB_RUN} -a -s "-screen 0 ${size}x24" ${GUI} --scene ${scene} --size ${size}
