@@ -45,6 +45,7 @@ constexpr const char* kKeys[][2] = {
     {"Ctrl+0", "UI scale back to 1x"},
     {"Ctrl+S", "save the state to the State panel's file (load it with --load-state or Load state)"},
     {"Page Down / Page Up", "next / previous lesson step (Lesson panel)"},
+    {"A", "show / hide the lesson step's answer (its \"predict first\" question)"},
     {"Left / Right (paused)", "scrub back / forward through the last 240 frames (view only)"},
     {"left drag (2D)", "pan the view"},
     {"left drag (3D)", "orbit the camera"},
