@@ -80,10 +80,7 @@ void report_exit(GuiState& state, const ParticleView& view, const Recorder& reco
 void report_layout(const ParticleView& view) {
   const ImDrawData* dd = ImGui::GetDrawData();
   if (dd == nullptr) return;
-  // the windows whose content scrolls: a line cut at their bottom edge is not a layout fault
-  const std::vector<std::string> scrolling = {"SPH sandbox", "Diagnostics", "Kernel explorer", "Particle inspector",
-                                              "Help  (F1)"};
-  const LayoutReport r = check_layout(*dd, *ImGui::GetIO().Fonts, scrolling);
+  const LayoutReport r = check_layout(*dd, *ImGui::GetIO().Fonts);
   std::printf("sph-gui: layout: %s\n", layout_text(r).c_str());
   const render::FrameLayout& frame = view.layout();
   const render::TextLayoutReport v =

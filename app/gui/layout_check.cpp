@@ -2,6 +2,7 @@
 #include "layout_check.h"
 
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include <algorithm>
 #include <cmath>
@@ -30,6 +31,13 @@ GlyphTable glyph_table(const ImFontAtlas& atlas) {
 }
 
 bool starts_with(const char* s, const char* prefix) { return s && std::string(s).rfind(prefix, 0) == 0; }
+
+/// Whether the draw list's window, or a window it lies in, shows a vertical scroll bar.
+bool scrolls(const char* owner) {
+  for (const ImGuiWindow* w = ImGui::FindWindowByName(owner); w != nullptr; w = w->ParentWindow)
+    if (w->ScrollbarY) return true;
+  return false;
+}
 
 /// The glyphs of one draw list, in drawing order.
 void list_glyphs(const ImDrawList& l, int index, const GlyphTable& table, bool may_scroll, std::vector<Glyph>& out) {
@@ -87,7 +95,7 @@ bool overlap(const Glyph& a, const Glyph& b) {
 
 }  // namespace
 
-LayoutReport check_layout(const ImDrawData& dd, const ImFontAtlas& atlas, const std::vector<std::string>& scrolling) {
+LayoutReport check_layout(const ImDrawData& dd, const ImFontAtlas& atlas) {
   const GlyphTable table = glyph_table(atlas);
   std::vector<Glyph> glyphs;
   std::vector<std::string> owners;
@@ -96,10 +104,7 @@ LayoutReport check_layout(const ImDrawData& dd, const ImFontAtlas& atlas, const 
     const char* owner = l._OwnerName ? l._OwnerName : "";
     owners.emplace_back(owner);
     if (starts_with(owner, "##Tooltip") || starts_with(owner, "##Popup")) continue;  // over the windows by design
-    const bool may_scroll = std::any_of(scrolling.begin(), scrolling.end(), [&](const std::string& w) {
-      return std::string(owner).rfind(w, 0) == 0;  // the window and its child windows ("Name/child")
-    });
-    list_glyphs(l, n, table, may_scroll, glyphs);
+    list_glyphs(l, n, table, scrolls(owner), glyphs);
   }
   LayoutReport r;
   r.glyphs = static_cast<int>(glyphs.size());

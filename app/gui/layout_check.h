@@ -1,7 +1,7 @@
 // Text layout checks on what Dear ImGui drew (the layout tests): every glyph quad of a frame's draw data,
 // found by its texture coordinates in the font atlas, is checked for being cut by its clip rectangle
-// (horizontally: a label cut by its column or window; vertically only in windows that cannot scroll, such
-// as the status line) and for overlapping a glyph of other text of its window (a dialog lies over the
+// (horizontally: a label cut by its column or window; vertically only in windows without a vertical scroll
+// bar, such as the status line: a window that scrolls cuts its lines at its edge by design) and for overlapping a glyph of other text of its window (a dialog lies over the
 // windows by design). Tooltips, which follow the mouse, are left out.
 #pragma once
 #include <string>
@@ -23,9 +23,8 @@ struct LayoutReport {
   std::vector<LayoutProblem> clipped, overlapping;
 };
 
-/// Checks the frame's draw data. `scrolling` names the windows whose content may scroll (their vertical
-/// cuts are not problems).
-LayoutReport check_layout(const ImDrawData& dd, const ImFontAtlas& atlas, const std::vector<std::string>& scrolling);
+/// Checks the frame's draw data (the current ImGui context's last frame: its windows tell which scroll).
+LayoutReport check_layout(const ImDrawData& dd, const ImFontAtlas& atlas);
 
 /// "N glyphs, C clipped, O overlapping" and the first few problems, one per line.
 std::string layout_text(const LayoutReport& r, std::size_t max_listed = 8);

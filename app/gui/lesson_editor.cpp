@@ -16,8 +16,6 @@ std::string value_text(const nlohmann::ordered_json& v) {
   return v.dump();
 }
 
-const char kAxes[] = {'x', 'y', 'z'};
-
 }  // namespace
 
 LessonSets changed_sets(const RunConfig& cfg) {
@@ -39,7 +37,10 @@ LessonView recorded_view(const render::ViewSettings& v) {
   out.profile_axis = std::string(v.profile_axis == 0 ? "x" : v.profile_axis == 1 ? "y" : v.profile_axis == 3 ? "r" : "off");
   if (!v.auto_range) out.range = std::make_pair(double(v.range_min), double(v.range_max));
   if (!v.camera2d.fit) out.zoom = std::array<double, 3>{v.camera2d.center_x, v.camera2d.center_y, v.camera2d.zoom};
-  if (v.cut_axis >= 0 && v.cut_axis < 3) out.cut = std::string(1, kAxes[v.cut_axis]) + "=" + lesson_number(v.cut_at);
+  if (v.cut_axis >= 0 && v.cut_axis < 3) {
+    out.cut_axis = v.cut_axis;
+    out.cut_at = v.cut_at;
+  }
   out.residuals = v.residuals ? 1 : 0;
   return out;
 }

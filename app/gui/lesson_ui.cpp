@@ -1,7 +1,6 @@
 #include "lesson_ui.h"
 
 #include <algorithm>
-#include <cstdlib>
 #include <filesystem>
 
 #include "profile_axis.h"
@@ -46,9 +45,9 @@ void apply_step_view(const LessonView& step, render::ViewSettings& view) {
     view.camera2d.center_y = static_cast<float>((*step.zoom)[1]);
     view.camera2d.zoom = static_cast<float>((*step.zoom)[2]);
   }
-  if (!step.cut.empty()) {  // "z=0.5" (checked when the lesson was read)
-    view.cut_axis = step.cut[0] - 'x';
-    view.cut_at = std::strtof(step.cut.c_str() + 2, nullptr);
+  if (step.cut_axis >= 0) {
+    view.cut_axis = step.cut_axis;
+    view.cut_at = static_cast<float>(step.cut_at);
   }
   if (step.residuals >= 0) view.residuals = step.residuals == 1;
 }

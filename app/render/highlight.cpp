@@ -26,14 +26,19 @@ std::vector<DrawnSet> drawn_sets(const FrameBuild& f) {
   return out;
 }
 
-/// Frame pixel of instance k of the set; false if behind the camera.
-bool pixel_of(const DrawnSet& s, std::size_t k, float* px, float* py) {
-  const float* p = s.instances->data() + k * kInstanceFloats;
-  const Vec4f c = s.camera->proj * (s.camera->view * Vec4f{p[0], p[1], p[2], 1.f});
+/// Frame pixel of the set's plot point (x, y, z); false if behind the camera.
+bool project(const DrawnSet& s, float x, float y, float z, float* px, float* py) {
+  const Vec4f c = s.camera->proj * (s.camera->view * Vec4f{x, y, z, 1.f});
   if (!(c.w > 0.f)) return false;
   *px = s.rect.x + (0.5f * c.x / c.w + 0.5f) * s.rect.w;
   *py = s.rect.y + (0.5f - 0.5f * c.y / c.w) * s.rect.h;
-  return s.rect.contains(*px, *py);
+  return true;
+}
+
+/// Frame pixel of instance k of the set; false if behind the camera or outside the plot.
+bool pixel_of(const DrawnSet& s, std::size_t k, float* px, float* py) {
+  const float* p = s.instances->data() + k * kInstanceFloats;
+  return project(s, p[0], p[1], p[2], px, py) && s.rect.contains(*px, *py);
 }
 
 void ring(ShapeBatch& b, float cx, float cy, float r, float width, Rgba c) {
@@ -51,13 +56,7 @@ void ring(ShapeBatch& b, float cx, float cy, float r, float width, Rgba c) {
 /// along the axes in 3D: the sphere's outline), an interval x +- R in a profile (along the plotted axis).
 void support_mark(ShapeBatch& b, const DrawnSet& s, std::size_t k, float R, bool profile, float width) {
   const float* p = s.instances->data() + k * kInstanceFloats;
-  const auto to_px = [&](float x, float y, float z, float* px, float* py) {
-    const Vec4f c = s.camera->proj * (s.camera->view * Vec4f{x, y, z, 1.f});
-    if (!(c.w > 0.f)) return false;
-    *px = s.rect.x + (0.5f * c.x / c.w + 0.5f) * s.rect.w;
-    *py = s.rect.y + (0.5f - 0.5f * c.y / c.w) * s.rect.h;
-    return true;
-  };
+  const auto to_px = [&](float x, float y, float z, float* px, float* py) { return project(s, x, y, z, px, py); };
   float cx = 0.f, cy = 0.f;
   if (!to_px(p[0], p[1], p[2], &cx, &cy)) return;
   const Rgba colour = palette::kKernelSupport;

@@ -15,7 +15,6 @@ void build_instances(const sph::Snapshot& snap, const ShownField& shown, const I
   const std::vector<float>* values = shown.field ? &shown.field->values : nullptr;
   auto at = [](const std::vector<float>& v, std::size_t i, float fallback) { return i < v.size() ? v[i] : fallback; };
   const std::vector<float>* coords[3] = {&snap.x, &snap.y, &snap.z};
-  const std::vector<float>& along = *coords[std::clamp(o.axis, 0, 2)];
   const bool profile = o.placement == Placement::Profile;
   const bool keep_walls = o.walls && !profile;
   constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
@@ -28,12 +27,7 @@ void build_instances(const sph::Snapshot& snap, const ShownField& shown, const I
     if (!profile && o.cut_axis >= 0 && at(*coords[std::min(o.cut_axis, 2)], i, 0.f) > o.cut_at) continue;  // cut away
     const float value = values ? at(*values, i, kNaN) : kNaN;
     if (profile) {
-      if (o.axis == kRadialAxis) {
-        const float x = snap.x[i], y = at(snap.y, i, 0.f), z = at(snap.z, i, 0.f);
-        p[0] = std::sqrt(x * x + y * y + z * z);
-      } else {
-        p[0] = at(along, i, 0.f);
-      }
+      p[0] = profile_coordinate(snap, i, o.axis);
       const float y = o.y ? at(*o.y, i, kNaN) : value;
       p[1] = std::isfinite(y) ? y : 0.f;
       p[2] = 0.f;

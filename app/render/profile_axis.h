@@ -1,8 +1,12 @@
 // Names of the profile view's axis (ViewSettings::profile_axis) for flags and menus: "off" (-1, the
 // plane or 3D view), "x" (0), "y" (1) for 2D scenes, "r" (3, the distance from the origin) for 2D and 3D.
 #pragma once
+#include <cmath>
+#include <cstddef>
 #include <optional>
 #include <string_view>
+
+#include "sph/snapshot.h"
 
 namespace sph::render {
 
@@ -21,6 +25,17 @@ inline std::optional<int> parse_profile_axis(std::string_view name) {
 inline std::string_view profile_axis_name(int axis) {
   constexpr std::string_view kNames[4] = {"x", "y", "z", "r"};
   return axis >= 0 && axis < 4 ? kNames[axis] : std::string_view("off");
+}
+
+/// Particle i's coordinate along `axis` (0..2; kRadialAxis: its distance from the origin): where a profile
+/// draws it. Missing coordinates count as 0.
+inline float profile_coordinate(const sph::Snapshot& snap, std::size_t i, int axis) {
+  const auto at = [&](const std::vector<float>& v) { return i < v.size() ? v[i] : 0.f; };
+  if (axis == kRadialAxis) {
+    const float x = at(snap.x), y = at(snap.y), z = at(snap.z);
+    return std::sqrt(x * x + y * y + z * z);
+  }
+  return at(axis == 1 ? snap.y : axis == 2 ? snap.z : snap.x);
 }
 
 /// Whether a scene of dimension dim is drawn as a profile along `axis` (1D scenes always are, along x).

@@ -41,8 +41,7 @@ void x_extent(const sph::Snapshot& snap, int axis, float& c0, float& c1) {
   if (axis == kRadialAxis) {
     c0 = 0.f, c1 = 0.f;
     for (std::size_t i = 0; i < snap.x.size(); ++i) {
-      const float x = snap.x[i], y = i < snap.y.size() ? snap.y[i] : 0.f, z = i < snap.z.size() ? snap.z[i] : 0.f;
-      const float rr = std::sqrt(x * x + y * y + z * z);
+      const float rr = profile_coordinate(snap, i, kRadialAxis);
       if (std::isfinite(rr)) c1 = std::max(c1, rr);
     }
     if (!(c1 > 0.f)) c1 = 1.f;

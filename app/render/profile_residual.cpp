@@ -14,10 +14,12 @@ namespace {
 
 /// Run r's fluid values as a curve over its coordinates, sorted (ties in particle order).
 sph::ExactCurve as_curve(const ProfileRun& r, int axis) {
-  const std::vector<float> c = profile_coordinates(*r.snap, axis);
+  std::vector<float> c(r.y.size());
   std::vector<std::size_t> order;
-  for (std::size_t i = 0; i < r.y.size() && i < c.size(); ++i)
+  for (std::size_t i = 0; i < r.y.size(); ++i) {
+    c[i] = profile_coordinate(*r.snap, i, axis);
     if (std::isfinite(r.y[i]) && std::isfinite(c[i]) && !r.snap->is_wall(i)) order.push_back(i);
+  }
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return c[a] < c[b]; });
   sph::ExactCurve out;
   for (std::size_t i : order) {
@@ -34,10 +36,9 @@ ProfileRun difference(const ProfileRun& base, const sph::ExactCurve& other, bool
   d.snap = base.snap;
   d.run = base.run;
   d.solid = colour;
-  const std::vector<float> c = profile_coordinates(*base.snap, axis);
   d.y.assign(base.y.size(), std::nanf(""));
-  for (std::size_t i = 0; i < base.y.size() && i < c.size(); ++i) {
-    const float o = exact_at(other, c[i]);
+  for (std::size_t i = 0; i < base.y.size(); ++i) {
+    const float o = exact_at(other, profile_coordinate(*base.snap, i, axis));
     d.y[i] = other_minus_base ? o - base.y[i] : base.y[i] - o;
     if (std::isfinite(d.y[i]) && !base.snap->is_wall(i)) largest = std::max(largest, std::abs(d.y[i]));
   }
@@ -59,16 +60,6 @@ float exact_at(const sph::ExactCurve& curve, float c) {
   const float dx = x[k] - x[j];
   const float w = dx > 0.f ? (c - x[j]) / dx : 0.f;
   return curve.value[j] + w * (curve.value[k] - curve.value[j]);
-}
-
-std::vector<float> profile_coordinates(const sph::Snapshot& snap, int axis) {
-  std::vector<float> c(snap.count, std::nanf(""));
-  for (std::size_t i = 0; i < snap.count; ++i) {
-    const float x = i < snap.x.size() ? snap.x[i] : 0.f, y = i < snap.y.size() ? snap.y[i] : 0.f,
-                z = i < snap.z.size() ? snap.z[i] : 0.f;
-    c[i] = axis == kRadialAxis ? std::sqrt(x * x + y * y + z * z) : axis == 1 ? y : axis == 2 ? z : x;
-  }
-  return c;
 }
 
 bool has_residuals(const ProfilePanel& p) { return two_1d_runs(p) || (p.curve.x.size() >= 2 && !p.runs.empty()); }

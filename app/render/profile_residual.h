@@ -13,9 +13,6 @@ namespace sph::render {
 /// v(c) by linear interpolation on the curve's abscissae (non-decreasing); NaN outside them.
 float exact_at(const sph::ExactCurve& curve, float c);
 
-/// Each particle's coordinate along `axis` (0..2, or kRadialAxis: the distance from the origin).
-std::vector<float> profile_coordinates(const sph::Snapshot& snap, int axis);
-
 /// Whether p has a residual panel: two 1D runs, or an exact curve.
 bool has_residuals(const ProfilePanel& p);
 

@@ -157,13 +157,14 @@ TEST(LessonParse, ViewRangeZoomCutAndResidualsAQuestionAndAPause) {
   EXPECT_EQ(*st.view.range, std::make_pair(0.1, 1.2));
   ASSERT_TRUE(st.view.zoom.has_value());
   EXPECT_EQ(*st.view.zoom, (std::array<double, 3>{0.25, -0.5, 4.0}));
-  EXPECT_EQ(st.view.cut, "z=0.5");
+  EXPECT_EQ(st.view.cut_axis, 2);
+  EXPECT_EQ(st.view.cut_at, 0.5);
   EXPECT_EQ(st.view.residuals, 1);
   EXPECT_EQ(st.predict, "Where is the error largest?");
   EXPECT_EQ(st.answer, "At the contact.");
   EXPECT_EQ(st.pause_at, 0.05);
   const std::string text = lesson_text(l);
-  EXPECT_NE(text.find("range 0.1 to 1.2; centre (0.25, -0.5), zoom 4; cutaway z=0.5; error strip"), std::string::npos);
+  EXPECT_NE(text.find("range 0.1 to 1.2; centre (0.25, -0.5), zoom 4; cutaway z <= 0.5; error strip"), std::string::npos);
   EXPECT_NE(text.find("predict first: Where is the error largest?\n  answer: At the contact."), std::string::npos);
   EXPECT_NE(text.find("pauses at t = 0.05"), std::string::npos);
   for (const auto& [part, where] : std::vector<std::pair<std::string, std::string>>{

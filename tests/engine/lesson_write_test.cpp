@@ -15,7 +15,7 @@ auto fields(const LessonStep& s) {
   const LessonView& v = s.view;
   const LessonCheck& k = s.check;
   return std::tie(s.title, s.text, s.scene, s.sets, s.change, s.look_at, s.predict, s.answer, s.pause_at, v.color_by,
-                  v.panels, v.log, v.profile_axis, v.range, v.zoom, v.cut, v.residuals, k.type, k.metric, k.reduce,
+                  v.panels, v.log, v.profile_axis, v.range, v.zoom, v.cut_axis, v.cut_at, v.residuals, k.type, k.metric, k.reduce,
                   k.until, k.key, k.values, k.a, k.b, k.smaller, k.factor, k.limit);
 }
 

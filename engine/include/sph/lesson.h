@@ -54,7 +54,10 @@ struct LessonView {
   std::optional<std::pair<double, double>> range;
   /// The 2D plane view's centre (x, y) and zoom (1: the scene's bounds fill the plot, 2: twice as close).
   std::optional<std::array<double, 3>> zoom;
-  std::string cut;                  ///< 3D cutaway "AXIS=VALUE", e.g. "z=0" (as --cut): the inside shows
+  /// 3D cutaway, read from "AXIS=VALUE" (as --cut, e.g. "z=0"): only particles with coordinate cut_axis
+  /// (0, 1, 2 for x, y, z) <= cut_at are drawn, and the inside shows; cut_axis -1: the viewer's choice stays.
+  int cut_axis = -1;
+  double cut_at = 0.0;
   int residuals = -1;               ///< profiles: 1 the error strip under each panel, 0 none
 };
 

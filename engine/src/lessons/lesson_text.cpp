@@ -24,7 +24,7 @@ std::string view_text(const LessonView& v) {
   if (!v.profile_axis.empty()) add(v.profile_axis == "off" ? "the plane view" : "profile along " + v.profile_axis);
   if (v.range) add("range " + num(v.range->first) + " to " + num(v.range->second));
   if (v.zoom) add("centre (" + num((*v.zoom)[0]) + ", " + num((*v.zoom)[1]) + "), zoom " + num((*v.zoom)[2]));
-  if (!v.cut.empty()) add("cutaway " + v.cut);
+  if (v.cut_axis >= 0) add(std::string("cutaway ") + "xyz"[v.cut_axis] + " <= " + num(v.cut_at));
   if (v.residuals >= 0) add(v.residuals == 1 ? "error strip" : "no error strip");
   return out;
 }

@@ -26,13 +26,16 @@ std::vector<double> numbers_of(const json& j, const char* key, std::size_t n, co
   return out;
 }
 
-/// "AXIS=VALUE" with AXIS x, y or z and a finite VALUE.
-bool valid_cut(const std::string& c) {
+/// "AXIS=VALUE" with AXIS x, y or z and a finite VALUE -> axis 0..2 and the value; false otherwise.
+bool parse_cut(const std::string& c, int* axis, double* at) {
   if (c.size() < 3 || (c[0] != 'x' && c[0] != 'y' && c[0] != 'z') || c[1] != '=') return false;
   const char* start = c.c_str() + 2;
   char* end = nullptr;
   const double v = std::strtod(start, &end);
-  return end != start && *end == '\0' && std::isfinite(v);
+  if (end == start || *end != '\0' || !std::isfinite(v)) return false;
+  *axis = c[0] - 'x';
+  *at = v;
+  return true;
 }
 
 }  // namespace
@@ -69,9 +72,9 @@ LessonView view_of(const json& obj, const std::string& origin, const std::string
     if (!(z[2] > 0.0)) fail(origin, p + ".zoom", "must be [centre x, centre y, zoom] with zoom > 0");
     v.zoom = std::array<double, 3>{z[0], z[1], z[2]};
   }
-  v.cut = text_of(j, "cut", false, origin, p + ".");
-  if (!v.cut.empty() && !valid_cut(v.cut))
-    fail(origin, p + ".cut", "'" + v.cut + "' is not AXIS=VALUE with AXIS x, y or z (as --cut), e.g. z=0");
+  const std::string cut = text_of(j, "cut", false, origin, p + ".");
+  if (!cut.empty() && !parse_cut(cut, &v.cut_axis, &v.cut_at))
+    fail(origin, p + ".cut", "'" + cut + "' is not AXIS=VALUE with AXIS x, y or z (as --cut), e.g. z=0");
   return v;
 }
 

@@ -11,8 +11,6 @@ namespace {
 
 std::string json_string(const std::string& s) { return nlohmann::json(s).dump(-1, ' ', false); }
 
-std::string number(double v) { return exact_text(v); }
-
 /// A set's value as it was read: a number where its text is one, otherwise a string.
 std::string value_json(const std::string& text) {
   char* end = nullptr;
@@ -45,9 +43,11 @@ std::string view_json(const LessonView& v) {
   }
   if (v.log >= 0) p.emplace_back("log", v.log ? "true" : "false");
   if (!v.profile_axis.empty()) p.emplace_back("profile_axis", json_string(v.profile_axis));
-  if (v.range) p.emplace_back("range", "[" + number(v.range->first) + ", " + number(v.range->second) + "]");
-  if (v.zoom) p.emplace_back("zoom", "[" + number((*v.zoom)[0]) + ", " + number((*v.zoom)[1]) + ", " + number((*v.zoom)[2]) + "]");
-  if (!v.cut.empty()) p.emplace_back("cut", json_string(v.cut));
+  if (v.range) p.emplace_back("range", "[" + lesson_number(v.range->first) + ", " + lesson_number(v.range->second) + "]");
+  if (v.zoom)
+    p.emplace_back("zoom", "[" + lesson_number((*v.zoom)[0]) + ", " + lesson_number((*v.zoom)[1]) + ", " +
+                               lesson_number((*v.zoom)[2]) + "]");
+  if (v.cut_axis >= 0) p.emplace_back("cut", json_string(std::string(1, "xyz"[v.cut_axis]) + "=" + lesson_number(v.cut_at)));
   if (v.residuals >= 0) p.emplace_back("residuals", v.residuals ? "true" : "false");
   return p.empty() ? std::string() : object(p);
 }
@@ -58,11 +58,11 @@ std::string check_json(const LessonCheck& k) {
   p.emplace_back("type", json_string(kTypes[static_cast<int>(k.type)]));
   p.emplace_back("metric", json_string(k.metric));
   if (k.reduce != "end") p.emplace_back("reduce", json_string(k.reduce));
-  if (k.until > 0.0) p.emplace_back("until", number(k.until));
+  if (k.until > 0.0) p.emplace_back("until", lesson_number(k.until));
   if (k.type == LessonCheck::Type::Falls) {
     p.emplace_back("key", json_string(k.key));
     std::string list = "[";
-    for (std::size_t i = 0; i < k.values.size(); ++i) list += (i ? ", " : "") + number(k.values[i]);
+    for (std::size_t i = 0; i < k.values.size(); ++i) list += (i ? ", " : "") + lesson_number(k.values[i]);
     p.emplace_back("values", list + "]");
   }
   if (k.type == LessonCheck::Type::Compare) {
@@ -70,8 +70,8 @@ std::string check_json(const LessonCheck& k) {
     p.emplace_back("b", sets_json(k.b));
     p.emplace_back("smaller", json_string(std::string(1, k.smaller)));
   }
-  if (k.type == LessonCheck::Type::Falls || k.type == LessonCheck::Type::Compare) p.emplace_back("factor", number(k.factor));
-  else p.emplace_back("limit", number(k.limit));
+  if (k.type == LessonCheck::Type::Falls || k.type == LessonCheck::Type::Compare) p.emplace_back("factor", lesson_number(k.factor));
+  else p.emplace_back("limit", lesson_number(k.limit));
   return object(p);
 }
 
@@ -84,7 +84,7 @@ std::string step_json(const LessonStep& st) {
   if (!st.sets.empty()) p.emplace_back("set", sets_json(st.sets));
   if (!st.change.empty()) p.emplace_back("change", json_string(st.change));
   if (!st.look_at.empty()) p.emplace_back("look_at", json_string(st.look_at));
-  if (st.pause_at > 0.0) p.emplace_back("pause_at", number(st.pause_at));
+  if (st.pause_at > 0.0) p.emplace_back("pause_at", lesson_number(st.pause_at));
   if (const std::string v = view_json(st.view); !v.empty()) p.emplace_back("view", v);
   p.emplace_back("check", check_json(st.check));
   std::string s = "    {\n";

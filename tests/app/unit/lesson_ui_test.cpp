@@ -67,7 +67,8 @@ TEST(LessonUi, AStepPutsItsRangeZoomCutawayAndErrorStrip) {
   LessonView step;
   step.range = std::make_pair(0.1, 1.2);
   step.zoom = std::array<double, 3>{0.25, -0.5, 4.0};
-  step.cut = "y=-0.25";
+  step.cut_axis = 1;
+  step.cut_at = -0.25;
   step.residuals = 1;
   apply_step_view(step, view);
   EXPECT_FALSE(view.auto_range);
