@@ -19,6 +19,7 @@
 #include "panels.h"
 #include "particle_view.h"
 #include "recorder.h"
+#include "sph/compare.h"
 #include "sph/config.h"
 #include "sph/key_value.h"
 #include "sph/stepper.h"
@@ -56,11 +57,36 @@ StepperOptions stepper_options(const GuiOptions& o) {
   return so;
 }
 
+/// --sweep KEY=V1,V2,...: kOk, or after a message naming it kUsage (not KEY=values, more than 5 values) or
+/// kInvalidScene (a key or value the scene refuses), before any window opens.
+int check_sweep(const GuiOptions& o, const RunConfig& cfg) {
+  if (o.sweep.empty()) return kOk;
+  std::string key, err;
+  std::vector<std::string> values;
+  if (!split_sweep(o.sweep, &key, &values, &err) || values.size() > 5) {
+    if (err.empty()) err = std::to_string(values.size()) + " values given, at most 5";
+    std::fprintf(stderr, "sph-gui: --sweep: %s\n", err.c_str());
+    return kUsage;
+  }
+  try {
+    for (const std::string& v : values) (void)fork_config(cfg, {key + "=" + v});
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "sph-gui: --sweep: %s\n", e.what());
+    return kInvalidScene;
+  }
+  return kOk;
+}
+
 /// The state the options start from: tree probe, comparison, inspector, a saved state, profile panels,
 /// recent files, the lesson; kOk, or the exit code after a message.
 int start_state(const GuiOptions& o, GuiState& state) {
   if (o.tree_probe >= 0) state.set_tree_probe(o.tree_probe);
   if (!o.compare_sets.empty()) state.set_compare(o.compare_sets);
+  if (!o.sweep.empty()) {  // checked by check_sweep
+    std::string key, err;
+    std::vector<std::string> values;
+    if (split_sweep(o.sweep, &key, &values, &err)) state.set_sweep(key, values);
+  }
   if (o.inspect >= 0) state.inspect(o.inspect);
   if (!o.load_state.empty() && !state.load_state(o.load_state)) {
     std::fprintf(stderr, "sph-gui: %s\n", state.message.c_str());
@@ -98,6 +124,7 @@ int run_gui(const GuiOptions& o) {
     std::fprintf(stderr, "sph-gui: invalid scene: %s\n", e.what());
     return kInvalidScene;
   }
+  if (const int rc = check_sweep(o, cfg); rc != kOk) return rc;
   std::string err;
   auto window = Window::create(o.width, o.height, "SPH sandbox", &err);
   if (!window) {

@@ -199,7 +199,7 @@ bool display_frame(MainLoop& l) {
   if (last) return true;
   scrub_back_hook(o, f, state);  // test hook: look back
   l.end_shown = o.quit_at_end && f && f->at_end && !state.building() && (o.scrub_back == 0 || state.scrub >= 0) &&
-                (o.compare_sets.empty() || f->comparing) && (state.inspect_id < 0 || (f->inspection &&
+                (o.compare_sets.empty() || f->comparing) && (o.sweep.empty() || !f->sweep.empty()) && (state.inspect_id < 0 || (f->inspection &&
                 f->inspection->step == f->snapshot.step)) && !l.view.stale(shown->serial, state.view, scene.highlight, view_rect) &&
                 l.view.shows(shown->serial);  // not a rate-limited older picture (a stale --quit-at-end screenshot)
   return false;

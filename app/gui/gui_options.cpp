@@ -83,6 +83,9 @@ int parse_options(int argc, char** argv, GuiOptions* out) {
   app.add_option("--record-size", o.record_size, "recorded frame size WIDTHxHEIGHT")->capture_default_str();
   app.add_option("--compare-set", o.compare_sets,
                  "start an A/B comparison: run B is this run with key=value changed (repeatable), e.g. kernel.type=M6");
+  app.add_option("--sweep", o.sweep,
+                 "start a parameter sweep: run A beside one more run per value, KEY=V1,V2,... (at most 5), e.g. "
+                 "kernel.eta=1.0,1.5; the profiles draw them all");
   app.add_option("--inspect", o.inspect, "open the particle inspector on this particle id")->check(CLI::NonNegativeNumber);
   app.add_option("--panels", o.panels, "profiles: one panel per field, e.g. rho,v,p,u (v: v_x in 1D)");
   app.add_flag("--quit-at-end", o.quit_at_end,

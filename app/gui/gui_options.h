@@ -26,6 +26,7 @@ struct GuiOptions {
   /// between the same two frames (the quick taps a key-state poll would lose).
   std::vector<std::string> tap_keys;
   long long tree_probe = -1;         ///< start with the tree overlay of this particle (tree-gravity scenes)
+  std::string sweep;                       ///< start a parameter sweep: "KEY=V1,V2,..." (one more run per value)
   std::vector<std::string> compare_sets;  ///< start an A/B comparison: run B with these key=value overrides
   long long inspect = -1;            ///< open the particle inspector on this id
   std::string panels;                ///< profiles: one panel per field, comma-separated ("rho,v,p,u")

@@ -84,6 +84,8 @@ class GuiState {
   void set_record_interval(double every) { stepper_.set_record_interval(every); }
   /// A/B comparison: both runs restart from t = 0, run B with these overrides (key=value); empty: stop.
   void set_compare(const std::vector<std::string>& overrides) { stepper_.set_compare(overrides); }
+  /// A parameter sweep: run A and one more run per value of `key`, from t = 0 (Stepper::set_sweep).
+  void set_sweep(const std::string& key, const std::vector<std::string>& values) { stepper_.set_sweep(key, values); }
   /// Writes the World's whole state to `path` (a checkpoint: `sph run --checkpoint-every`'s format).
   void save_state(const std::string& path);
   /// Replaces the World by the state in checkpoint `path` (saved here or by `sph run`); a file that is
@@ -98,6 +100,7 @@ class GuiState {
   PushDrag push;                   ///< the right-drag push: its settings and the drag in progress
   std::int64_t inspect_id = -1;    ///< as last sent (-1: the inspector is closed)
   std::string compare_text = "kernel.type=M6";  ///< the compare panel's overrides, comma-separated
+  std::string sweep_key = "kernel.eta", sweep_values = "1.0, 1.5";  ///< the sweep panel's key and values
   double real_time_factor = 0.0;   ///< as last sent (0 = as fast as possible)
   bool stop_at_end = true;         ///< as last sent
   double pause_at = 0.0;           ///< as last sent (0: no pause time)

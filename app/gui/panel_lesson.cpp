@@ -37,6 +37,7 @@ void show_lesson_step(GuiState& s, int step) {
   try {
     s.load(step_config(st));
     s.set_compare(step_compare(st));  // empty: no comparison
+    s.set_sweep(st.sweep_key, st.sweep_values);  // no values: no sweep
     s.set_pause_at(st.pause_at);      // <= 0: none
     apply_step_view(st.view, s.view);  // what the step's text asks to look at
     L.answer_shown = false;

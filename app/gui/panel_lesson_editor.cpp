@@ -65,6 +65,12 @@ void lesson_editor(GuiState& s) {
   ImGui::BeginDisabled(d.title.empty() || d.metric.empty());
   if (ImGui::Button("Add this run as a step")) {
     L.recorded.steps.push_back(record_step(f->config, s.view, f->snapshot.t, d));
+    if (!f->sweep.empty()) {  // the sweep on screen: its key and values
+      LessonStep& st = L.recorded.steps.back();
+      st.sweep_key = f->sweep_key;
+      for (const CompareFrame& r : f->sweep)
+        if (!r.overrides.empty()) st.sweep_values.push_back(r.overrides.front().substr(r.overrides.front().find('=') + 1));
+    }
     L.editor_message = "step " + std::to_string(L.recorded.steps.size()) + " recorded at t = " + lesson_number(f->snapshot.t);
   }
   ImGui::EndDisabled();

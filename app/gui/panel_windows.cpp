@@ -28,6 +28,7 @@ void draw_panels(GuiState& s, const Layout& L, const FrameStats& stats) {
     if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) panel_params(s);
     if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) panel_display(s);
     if (ImGui::CollapsingHeader("Compare (A/B)")) panel_compare(s);
+    if (ImGui::CollapsingHeader("Sweep (overlays)")) panel_sweep(s);
     if (ImGui::CollapsingHeader("State (checkpoint)")) panel_state(s);
     if (ImGui::CollapsingHeader("Convergence study")) panel_converge(s);
     ImGui::PopItemWidth();

@@ -19,6 +19,7 @@ void panel_diagnostics(GuiState& s);  ///< energies, momentum, L1 error against 
 void panel_converge(GuiState& s);     ///< convergence study of the current scene (sph converge)
 void panel_kernel(GuiState& s);       ///< kernel explorer: W(q), dW/dq against the Gaussian
 void panel_compare(GuiState& s);      ///< A/B comparison: run B's overrides, start and stop
+void panel_sweep(GuiState& s);        ///< a parameter sweep: its key and values, start and stop
 void panel_state(GuiState& s);        ///< save the run's whole state to a checkpoint file, or load one
 void panel_inspector(GuiState& s);    ///< the picked particle: fields, equation terms, neighbours
 void status_line(GuiState& s, const FrameStats& stats);  ///< t, dt, steps/s, neighbours, h-iterations

@@ -40,6 +40,21 @@ render::FrameScene view_scene(const StepperFrame& f) {
     scene.errors_a = errors_of(f.ref_columns, f.ref_values);
     scene.errors_b = errors_of(f.ref_columns, f.compare.ref_values);
   }
+  if (!f.sweep.empty()) {  // run A labelled with its own value of the key, each sweep run with its value
+    scene.sweep_key = f.sweep_key;
+    const std::string a = compare_label(f.config, f.sweep.front().overrides);
+    scene.label_a = a + " (A)";
+    scene.value_a = a.substr(a.find('=') + 1);
+    scene.errors_a = errors_of(f.ref_columns, f.ref_values);
+    for (const CompareFrame& r : f.sweep) {
+      render::SweepRun run;
+      run.snap = &r.snapshot;
+      run.label = compare_label(r.config, r.overrides);
+      run.value = run.label.substr(run.label.find('=') + 1);
+      run.errors = errors_of(f.ref_columns, r.ref_values);
+      scene.sweep.push_back(std::move(run));
+    }
+  }
   if (f.inspection) scene.highlight = highlight_of(*f.inspection);
   return scene;
 }

@@ -1,5 +1,6 @@
-// What one frame shows: a snapshot, or the two runs of an A/B comparison with their legend labels and
-// reference errors, and optionally a particle picked out with its neighbours (the inspector).
+// What one frame shows: a snapshot, or the two runs of an A/B comparison, or run A with the other runs of
+// a parameter sweep, with their legend labels and reference errors, and optionally a particle picked out
+// with its neighbours (the inspector).
 #pragma once
 #include <cstdint>
 #include <string>
@@ -14,10 +15,13 @@ struct Snapshot;
 
 namespace sph::render {
 
-/// Colours of the runs of a comparison (dots, captions and legend rows), and of the exact curve drawn
-/// with them: bright against the dark plot fill and apart from each other for colour-blind viewers
-/// (orange and sky blue, Okabe & Ito 2008).
-inline constexpr Rgba kRunColors[2] = {{0.90f, 0.62f, 0.00f, 1.f}, {0.34f, 0.71f, 0.91f, 1.f}};
+/// Colours of the runs of a comparison or a sweep (dots, captions and legend rows), and of the exact curve
+/// drawn with them: bright against the dark plot fill and apart from each other for colour-blind viewers
+/// (orange, sky blue, bluish green, yellow, vermillion, reddish purple: Okabe & Ito 2008).
+inline constexpr int kRunColorCount = 6;
+inline constexpr Rgba kRunColors[kRunColorCount] = {{0.90f, 0.62f, 0.00f, 1.f}, {0.34f, 0.71f, 0.91f, 1.f},
+                                                    {0.00f, 0.62f, 0.45f, 1.f}, {0.94f, 0.89f, 0.26f, 1.f},
+                                                    {0.84f, 0.37f, 0.00f, 1.f}, {0.80f, 0.47f, 0.65f, 1.f}};
 inline constexpr Rgba kCompareExact{0.96f, 0.96f, 0.96f, 1.f};
 
 /// A particle drawn with a ring (the inspected one), its neighbours with fainter rings whose strength
@@ -30,16 +34,32 @@ struct Highlight {
   bool operator==(const Highlight&) const = default;
 };
 
+/// One more run of a parameter sweep, drawn over run A in the profiles.
+struct SweepRun {
+  const sph::Snapshot* snap = nullptr;
+  std::string label;        ///< its legend name ("kernel.eta=1.5")
+  std::string value;        ///< the swept value alone ("1.5"), for the legends of small panels
+  std::vector<std::pair<std::string, double>> errors;  ///< its reference values, as errors_a
+};
+
+/// A run's index in Picked::run and ParticleBatch::run: 0 run A, 1 run B, 2 + k the sweep's run k.
+inline constexpr int kFirstSweepRun = 2;
+
 struct FrameScene {
   const sph::Snapshot* a = nullptr;  ///< the run shown (run A of a comparison)
   const sph::Snapshot* b = nullptr;  ///< run B of a comparison, or nullptr
   std::string label_a = "A", label_b = "B";  ///< the runs' legend names
   /// Their reference values (column name, value): a profile's legend shows "L1_<field>" of each run.
   std::vector<std::pair<std::string, double>> errors_a, errors_b;
+  /// A parameter sweep's other runs (none: no sweep); profiles draw them over run A in kRunColors[1..],
+  /// particle views show run A alone. Its key is sweep_key, run A's own value value_a.
+  std::vector<SweepRun> sweep;
+  std::string sweep_key, value_a;
   Highlight highlight;
 };
 
-/// What a pixel shows (Renderer::pick): a particle of run 0 (A) or 1 (B), by snapshot index.
+/// What a pixel shows (Renderer::pick): a particle of run 0 (A), 1 (B) or kFirstSweepRun + k (a sweep's
+/// run k), by snapshot index.
 struct Picked {
   int run = 0;
   std::uint32_t index = 0;

@@ -107,8 +107,8 @@ ShapeBatch* add_runs(FrameBuild& f, const ProfilePanel& p, const ShownField& sho
     if (k == 0) b.fill = at.box;
     b.camera = at.camera;
     b.run = run.run;
-    // run B's dots smaller, over run A's: where the runs agree both stay visible
-    b.pixel_radius = run.run == 1 ? std::max(1.5f, 0.55f * at.radius) : at.radius;
+    // later runs' dots smaller, over run A's: where the runs agree all stay visible
+    b.pixel_radius = run.dot_scale < 1.f ? std::max(1.5f, run.dot_scale * at.radius) : at.radius;
     b.cmap = shown.cmap;
     b.range = shown.range;
     b.colors = {run.colour ? palette::kInvalid : run.solid, run.solid};
@@ -144,7 +144,7 @@ void add_curve_and_legend(FrameBuild& f, const ProfilePanel& p, const ShownField
   for (const ProfileRun& run : p.runs) {
     if (run.legend.empty()) continue;
     const Rgb mid = colormap_rgb(shown.cmap, 0.5f);
-    const float dot = run.run == 1 ? std::max(1.5f, 0.55f * at.radius) : at.radius;
+    const float dot = run.dot_scale < 1.f ? std::max(1.5f, run.dot_scale * at.radius) : at.radius;
     rows.push_back({run.legend, true, run.colour ? Rgba{mid.r, mid.g, mid.b, 1.f} : run.solid, dot, {0, 0, 0, 0}});
   }
   // Keep the legend off the particles and the curve (it hid the shock in v_x and the u plateau).

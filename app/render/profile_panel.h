@@ -18,6 +18,7 @@ struct ProfileRun {
   const sph::SnapshotField* colour = nullptr;  ///< colour-mapped field; nullptr: drawn in `solid`
   Rgba solid;
   std::string legend;                    ///< its legend row ("" for none)
+  float dot_scale = 1.f;                 ///< < 1: smaller dots, drawn over the runs before it
 };
 
 /// A panel: its area, titles, runs, exact curve and vertical limits.
@@ -33,6 +34,9 @@ struct ProfilePanel {
   int legend_scale = 0;   ///< > 0: the legend's text scale (small panels)
   float y_label_min = 0.f;  ///< the y labels' column at least this wide [px]: stacked panels share their x axis
   bool x_labels = true;     ///< false: no x tick labels or title (the panel under it has them)
+  /// Non-empty: its residual strip shows each later run minus the first (1D runs), under this title
+  /// ("B - A"); empty: each run minus the exact curve.
+  std::string versus_first;
 };
 
 /// The exact curve of `field` along `axis` (log10 of its positive values when `log`), or an empty one.

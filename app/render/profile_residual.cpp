@@ -45,8 +45,12 @@ ProfileRun difference(const ProfileRun& base, const sph::ExactCurve& other, bool
   return d;
 }
 
-bool two_1d_runs(const ProfilePanel& p) {
-  return p.runs.size() == 2 && p.runs[0].snap && p.runs[1].snap && p.runs[0].snap->dim == 1 && p.runs[1].snap->dim == 1;
+/// The strip shows each later run minus the first: asked for, and every run 1D.
+bool versus_first(const ProfilePanel& p) {
+  if (p.versus_first.empty() || p.runs.size() < 2) return false;
+  for (const ProfileRun& r : p.runs)
+    if (r.snap == nullptr || r.snap->dim != 1) return false;
+  return true;
 }
 
 }  // namespace
@@ -62,7 +66,7 @@ float exact_at(const sph::ExactCurve& curve, float c) {
   return curve.value[j] + w * (curve.value[k] - curve.value[j]);
 }
 
-bool has_residuals(const ProfilePanel& p) { return two_1d_runs(p) || (p.curve.x.size() >= 2 && !p.runs.empty()); }
+bool has_residuals(const ProfilePanel& p) { return versus_first(p) || (p.curve.x.size() >= 2 && !p.runs.empty()); }
 
 ProfilePanel residual_panel(const ProfilePanel& p, int axis) {
   ProfilePanel r;
@@ -71,11 +75,14 @@ ProfilePanel residual_panel(const ProfilePanel& p, int axis) {
   r.legend_scale = p.legend_scale;
   float largest = 0.f;
   float x0 = 0.f, x1 = 1.f;
-  if (two_1d_runs(p)) {  // B - A at A's particles
-    r.y_title = "B - A";
-    const sph::ExactCurve b = as_curve(p.runs[1], axis);
-    r.runs.push_back(difference(p.runs[0], b, true, axis, kRunColors[1], largest));
-    if (b.x.size() >= 2) x0 = b.x.front(), x1 = b.x.back();
+  if (versus_first(p)) {  // B - A (each later run minus A) at A's particles
+    r.y_title = p.versus_first;
+    for (std::size_t k = 1; k < p.runs.size(); ++k) {
+      const sph::ExactCurve b = as_curve(p.runs[k], axis);
+      r.runs.push_back(difference(p.runs[0], b, true, axis, p.runs[k].solid, largest));
+      r.runs.back().dot_scale = p.runs[k].dot_scale;
+      if (k == 1 && b.x.size() >= 2) x0 = b.x.front(), x1 = b.x.back();
+    }
   } else {  // each run minus the exact curve
     r.y_title = "minus exact";
     for (const ProfileRun& run : p.runs)  // a colour-mapped single run in run A's colour
@@ -90,7 +97,8 @@ ProfilePanel residual_panel(const ProfilePanel& p, int axis) {
   r.curve_label = "";  // no legend: the title says what the strip is
   r.fixed = true;      // symmetric about the zero line
   char scale[48];  // the strip is short: its title gives the scale
-  std::snprintf(scale, sizeof scale, "   (largest |%s| %.3g)", two_1d_runs(p) ? "B - A" : "error", double(largest));
+  std::snprintf(scale, sizeof scale, "   (largest |%s| %.3g)", versus_first(p) ? p.versus_first.c_str() : "error",
+                double(largest));
   r.y_title += scale;
   const double m = largest > 0.f ? 1.1 * largest : 1.0;
   r.y0 = -m;

@@ -1,6 +1,6 @@
 // Residual panels of profiles: a strip under a panel that shows what the panel's curves hide. A comparison
-// of two 1D runs shows B - A (B interpolated at A's particles): runs that overlap on the profile, such as
-// M4 against M6 on Sod, separate there. Otherwise each run minus the exact curve at its particles, on a
+// of two 1D runs shows B - A (B interpolated at A's particles), a 1D sweep without an exact curve each run
+// minus A: runs that overlap on the profile, such as M4 against M6 on Sod, separate there. Otherwise each run minus the exact curve at its particles, on a
 // zero line: where a run makes its error.
 #pragma once
 #include <cstddef>
@@ -13,7 +13,7 @@ namespace sph::render {
 /// v(c) by linear interpolation on the curve's abscissae (non-decreasing); NaN outside them.
 float exact_at(const sph::ExactCurve& curve, float c);
 
-/// Whether p has a residual panel: two 1D runs, or an exact curve.
+/// Whether p has a residual panel: 1D runs against the first (ProfilePanel::versus_first), or an exact curve.
 bool has_residuals(const ProfilePanel& p);
 
 /// The residual panel of `p` (see above): y limits symmetric about zero, the zero line as its curve.

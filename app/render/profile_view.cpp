@@ -37,6 +37,47 @@ std::string legend_of(const std::string& label, const std::vector<std::pair<std:
   return label + buf;
 }
 
+/// A run of a comparison or a sweep as the panels draw it.
+struct PanelRun {
+  const sph::Snapshot* snap = nullptr;
+  int run = 0;                      ///< Picked::run
+  std::string label, short_label;   ///< legend names: alone, and in a grid (the header has the full ones)
+  const std::vector<std::pair<std::string, double>>* errors = nullptr;
+  Rgba colour;
+  float dot_scale = 1.f;            ///< later runs' dots smaller, drawn over the earlier ones
+};
+
+/// Run A and run B, or run A and the sweep's runs; none for a single run.
+std::vector<PanelRun> panel_runs(const FrameScene& scene) {
+  std::vector<PanelRun> out;
+  if (scene.b) {
+    out.push_back({scene.a, 0, scene.label_a, "A", &scene.errors_a, kRunColors[0], 1.f});
+    out.push_back({scene.b, 1, scene.label_b, "B", &scene.errors_b, kRunColors[1], 0.55f});
+  } else if (!scene.sweep.empty()) {
+    out.push_back({scene.a, 0, scene.label_a, scene.value_a + " (A)", &scene.errors_a, kRunColors[0], 1.f});
+    float dot = 0.55f;
+    for (std::size_t k = 0; k < scene.sweep.size(); ++k, dot *= 0.85f) {
+      const SweepRun& r = scene.sweep[k];
+      out.push_back({r.snap, kFirstSweepRun + static_cast<int>(k), r.label, r.value, &r.errors,
+                     kRunColors[(k + 1) % kRunColorCount], dot});
+    }
+  }
+  return out;
+}
+
+/// The runs' names once above a grid of panels, each in its colour ("A: ...   B: ..." or "key:  1.2 (A)
+/// 1.0  1.5"); `area` loses that line.
+void add_run_header(FrameBuild& f, const FrameScene& scene, const std::vector<PanelRun>& runs, PixelRect& area) {
+  const int s = f.layout.text_scale;
+  const float lh = f.text.line_height(s);
+  float x = area.x;
+  if (!scene.b) x += f.text.add(scene.sweep_key + ":", x, area.y, s, palette::kText) + 1.5f * lh;
+  for (const PanelRun& r : runs)
+    x += f.text.add(scene.b ? r.label : r.short_label, x, area.y, s, r.colour) + (scene.b ? 3.f : 1.5f) * lh;
+  area.y += lh + f.layout.margin;
+  area.h -= lh + f.layout.margin;
+}
+
 }  // namespace
 
 void compose_profile(FrameBuild& f, const sph::Snapshot& snap, const ViewSettings& view, const ShownField& shown,
@@ -84,16 +125,10 @@ void compose_profile_panels(FrameBuild& f, const FrameScene& scene, const ViewSe
   const int n = static_cast<int>(fields.size());
   const int cols = n <= 1 ? 1 : n <= 4 ? 2 : 3, rows = (n + cols - 1) / cols;
   const float gap = L.margin;
-  const bool compare = scene.b != nullptr;
+  const std::vector<PanelRun> runs = panel_runs(scene);
+  const bool several = !runs.empty();
   PixelRect area = L.content;
-  const int s = L.text_scale;
-  if (compare && n > 1) {  // the runs' full labels once, above the panels; each legend says "A", "B"
-    const float lh = f.text.line_height(s);
-    const float wa = f.text.add(scene.label_a, area.x, area.y, s, kRunColors[0]);
-    f.text.add(scene.label_b, area.x + wa + 3.f * lh, area.y, s, kRunColors[1]);
-    area.y += lh + gap;
-    area.h -= lh + gap;
-  }
+  if (several && n > 1) add_run_header(f, scene, runs, area);  // the full labels once; legends say "A", "B"
   const float w = (area.w - (cols - 1) * gap) / cols, h = (area.h - (rows - 1) * gap) / rows;
   for (int k = 0; k < n; ++k) {
     const std::string& field = fields[static_cast<std::size_t>(k)];
@@ -101,32 +136,34 @@ void compose_profile_panels(FrameBuild& f, const FrameScene& scene, const ViewSe
     const bool log = view.log_scale && field == view.color_by;
     ProfilePanel p;
     p.area = {area.x + (k % cols) * (w + gap), area.y + (k / cols) * (h + gap), w, h};
-    if (n > 1) p.legend_scale = std::max(1, s - 1);
+    if (n > 1) p.legend_scale = std::max(1, L.text_scale - 1);
     p.x_title = a.x_label.empty() ? std::string(profile_axis_name(axis)) : a.x_label;
     const sph::SnapshotField* fa = a.find(field);
     p.y_title = (log ? "log10 " : "") + (fa ? fa->label : field + " (not in this scene)");
-    const sph::Snapshot* snaps[2] = {&a, scene.b};
-    for (int r = 0; r < (compare ? 2 : 1); ++r) {
+    if (view.show_exact) p.curve = curve_of(a, field, axis, log);
+    for (std::size_t r = 0; r < std::max<std::size_t>(1, runs.size()); ++r) {
       ProfileRun run;
-      run.snap = snaps[r];
-      run.run = r;
-      run.y = values_of(*snaps[r], field, log);
-      if (compare) {
-        run.solid = kRunColors[r];
-        const std::string name = n > 1 ? (r == 0 ? "A" : "B") : (r == 0 ? scene.label_a : scene.label_b);
-        run.legend = legend_of(name, r == 0 ? scene.errors_a : scene.errors_b, field);
+      run.snap = several ? runs[r].snap : &a;
+      run.y = values_of(*run.snap, field, log);
+      if (several) {
+        run.run = runs[r].run;
+        run.solid = runs[r].colour;
+        run.dot_scale = runs[r].dot_scale;
+        run.legend = legend_of(n > 1 ? runs[r].short_label : runs[r].label, *runs[r].errors, field);
       } else {
         run.colour = shown.field;  // coloured by the colour-by field, as the single plot
         run.legend = a.points_label.empty() ? "SPH particles" : a.points_label;
       }
       p.runs.push_back(std::move(run));
     }
-    if (view.show_exact) p.curve = curve_of(a, field, axis, log);
     const Rgb c = colormap_contrast(shown.cmap);
-    p.curve_color = compare ? kCompareExact : Rgba{c.r, c.g, c.b, 1.f};
+    p.curve_color = several ? kCompareExact : Rgba{c.r, c.g, c.b, 1.f};
     p.curve_label = a.curve_label.empty() ? "exact" : a.curve_label;
-    const std::size_t drawn = compose_with_residuals(f, std::move(p), view, shown, axis, false,
-                                                     view.residuals || compare);
+    // the strip: B - A for a comparison; each run minus A for a sweep with nothing exact to compare with
+    if (scene.b) p.versus_first = "B - A";
+    else if (several && p.curve.x.size() < 2) p.versus_first = "run - A";
+    const bool strip = view.residuals || scene.b != nullptr || !p.versus_first.empty();
+    const std::size_t drawn = compose_with_residuals(f, std::move(p), view, shown, axis, false, strip);
     if (k == 0 && drawn > 0) {  // the first panel stands for the frame (picking hit-tests every batch)
       L.plot = f.batches[drawn - 1].rect;
       L.plot_to_clip = f.batches[drawn - 1].camera.proj;

@@ -146,10 +146,11 @@ void Renderer::compose(FrameBuild& f, const FrameScene& scene, const ViewSetting
   const bool profile = draws_profile(snap.dim, axis);
   std::vector<std::string> fields = panel_fields(snap, view.panels);
   if (fields.empty()) fields.push_back(shown.field ? shown.field->name : view.color_by);
-  // a comparison's profiles show the runs in two colours, not the colour map: no colour bar
-  const ShownField bar = profile && scene.b ? ShownField{} : shown;
+  // a comparison's or a sweep's profiles show the runs in their colours, not the colour map: no colour bar
+  const bool several = scene.b || !scene.sweep.empty();
+  const ShownField bar = profile && several ? ShownField{} : shown;
   layout_chrome(f, bar, width, height, view.text_scale);
-  if (profile && !scene.b && fields.size() <= 1)
+  if (profile && !several && fields.size() <= 1)
     compose_profile(f, snap, view, shown, axis);
   else if (profile)
     compose_profile_panels(f, scene, view, shown, axis, fields);
@@ -159,6 +160,11 @@ void Renderer::compose(FrameBuild& f, const FrameScene& scene, const ViewSetting
     compose_orbit(f, snap, view, shown);
   else
     compose_plane(f, snap, view, shown);
+  if (!profile && !scene.sweep.empty()) {  // a sweep's runs have no place in a particle view: say where they are
+    const float lh = f.text.line_height(f.layout.text_scale);
+    f.text.add("sweep: its runs are drawn in the profile views", f.layout.plot.x + 0.5f * lh,
+               f.layout.plot.bottom() - 1.5f * lh, f.layout.text_scale, palette::kDimText);
+  }
   add_colorbar(f, bar);
   add_title(f, snap, shown);
   add_highlight(f, scene.highlight, profile);

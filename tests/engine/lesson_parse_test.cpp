@@ -186,6 +186,30 @@ TEST(LessonParse, ViewRangeZoomCutAndResidualsAQuestionAndAPause) {
   }
 }
 
+TEST(LessonParse, ASweepOfOneKeyAndItsErrors) {
+  const std::string below = R"("check": {"type": "below", "metric": "L1_rho", "limit": 1})";
+  const Lesson l = parse_lesson(
+      lesson_with(std::string(kStep) + R"(, "sweep": {"key": "kernel.eta", "values": [1.0, "1.5"]}, )" + below), "l.json");
+  EXPECT_EQ(l.steps[0].sweep_key, "kernel.eta");
+  EXPECT_EQ(l.steps[0].sweep_values, (std::vector<std::string>{"1", "1.5"}));
+  EXPECT_NE(lesson_text(l).find("sweep: kernel.eta = 1, 1.5"), std::string::npos) << lesson_text(l);
+  const std::string compare =
+      R"("check": {"type": "compare", "metric": "L1_rho", "a": {"visc.alpha": 1}, "b": {"visc.alpha": 0}, "smaller": "a", "factor": 1.5})";
+  for (const auto& [part, where] : std::vector<std::pair<std::string, std::string>>{
+           {R"("sweep": [1, 2])", "steps[0].sweep: must be an object"},
+           {R"("sweep": {"key": "kernel.eta", "values": []})", "steps[0].sweep.values: must be a list of 1 to 5 values"},
+           {R"("sweep": {"key": "kernel.eta", "values": [1, 1.1, 1.2, 1.3, 1.4, 1.5]})", "steps[0].sweep.values: must be a list of 1 to 5"},
+           {R"("sweep": {"key": "kernel.eta", "values": [true]})", "steps[0].sweep.values: must hold strings or numbers"},
+           {R"("sweep": {"key": "kernel.eta", "values": [9]})", "steps[0].sweep: check kernel.eta: key 'kernel.eta': kernel.eta = 9 is out of range"},
+           {R"("sweep": {"key": "kernel.etta", "values": [1]})", "steps[0].sweep: "},
+           {R"("sweep": {"key": "kernel.eta", "values": [1], "colour": 1})", "steps[0].sweep.colour: unknown key"}}) {
+    const std::string msg = error_of(lesson_with(std::string(kStep) + ", " + part + ", " + below));
+    EXPECT_NE(msg.find(where), std::string::npos) << part << " -> " << msg;
+  }
+  const std::string msg = error_of(lesson_with(std::string(kStep) + R"(, "sweep": {"key": "kernel.eta", "values": [1]}, )" + compare));
+  EXPECT_NE(msg.find("steps[0].sweep: a step with a compare check shows A and B, not a sweep"), std::string::npos) << msg;
+}
+
 TEST(LessonParse, UnreadableFile) {
   try {
     load_lesson("/nonexistent/l.json");

@@ -14,7 +14,8 @@ namespace {
 auto fields(const LessonStep& s) {
   const LessonView& v = s.view;
   const LessonCheck& k = s.check;
-  return std::tie(s.title, s.text, s.scene, s.sets, s.change, s.look_at, s.predict, s.answer, s.pause_at, v.color_by,
+  return std::tie(s.title, s.text, s.scene, s.sets, s.change, s.look_at, s.predict, s.answer, s.pause_at, s.sweep_key,
+                  s.sweep_values, v.color_by,
                   v.panels, v.log, v.profile_axis, v.range, v.zoom, v.cut_axis, v.cut_at, v.residuals, k.type, k.metric, k.reduce,
                   k.until, k.key, k.values, k.a, k.b, k.smaller, k.factor, k.limit);
 }
@@ -49,7 +50,7 @@ TEST(LessonWrite, AStepWithEveryPartReadsBackTheSame) {
               "zoom": [0.25, -0.5, 4], "cut": "z=0.5", "residuals": true},
      "check": {"type": "compare", "metric": "L1_v", "reduce": "max", "until": 0.15, "a": {"visc.alpha": 1},
                "b": {"visc.alpha": 0}, "smaller": "a", "factor": 3}},
-    {"title": "falls", "text": "y", "scene": "sod",
+    {"title": "falls", "text": "y", "scene": "sod", "sweep": {"key": "kernel.type", "values": ["M6", "wendland_c2"]},
      "check": {"type": "falls", "metric": "L1_rho", "key": "scene.n_left", "values": [100, 200], "factor": 1.5}}]})",
                                 "l.json");
   expect_round_trip(l, "hand-made");

@@ -26,6 +26,7 @@ ProfilePanel panel_of(const Snapshot& a, const Snapshot* b) {
     p.runs.push_back(r);
   }
   p.curve = curve_of(a, a.fields.front().name, 0, false);
+  if (b) p.versus_first = "B - A";
   return p;
 }
 

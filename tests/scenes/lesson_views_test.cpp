@@ -31,13 +31,14 @@ std::vector<std::string> coloured_by(const std::string& text) {
   return out;
 }
 
-/// The word before each " panel" in `text` ("the v panel" -> "v").
+/// The word before each " panel" in `text` ("the v panel" -> "v"); the GUI's own panels, named with a
+/// capital ("the Sweep panel"), are not profile panels.
 std::vector<std::string> panels_named(const std::string& text) {
   std::vector<std::string> out;
   for (std::size_t k = text.find(" panel"); k != std::string::npos; k = text.find(" panel", k + 1)) {
     std::size_t b = k;
     while (b > 0 && word_char(text[b - 1])) --b;
-    if (b < k) out.push_back(text.substr(b, k - b));
+    if (b < k && !std::isupper(static_cast<unsigned char>(text[b]))) out.push_back(text.substr(b, k - b));
   }
   return out;
 }

@@ -71,6 +71,10 @@ struct LessonStep {
   /// A question to answer before running ("predict first") and its answer, which the GUI shows on a key.
   std::string predict, answer;
   double pause_at = -1.0;  ///< > 0: the GUI pauses the run when it reaches this time; Play goes on
+  /// A parameter sweep the GUI runs beside the step's run ("sweep": {"key": K, "values": [...]}, at most
+  /// 5 values), its runs drawn over each other in the profiles; no key: none.
+  std::string sweep_key;
+  std::vector<std::string> sweep_values;
 };
 
 struct Lesson {

@@ -91,6 +91,8 @@ struct StepperFrame {
 
   bool comparing = false;          ///< `compare` holds run B of an A/B comparison
   CompareFrame compare;
+  std::string sweep_key;           ///< the key of a parameter sweep ("" = none; Stepper::set_sweep)
+  std::vector<CompareFrame> sweep; ///< its runs (each with overrides {key=value}), at this frame's time
   /// Report::inspect of the particle asked for (Stepper::set_inspect); while running refreshed at most 4
   /// times a second and within a tenth of the engine's time (its `step` says which state it explains),
   /// at every new state otherwise.
@@ -145,6 +147,12 @@ class Stepper {
   /// keeps its overrides). An override the scene refuses leaves everything as it was and reports the
   /// error. Empty: the comparison stops (the first World runs on).
   void set_compare(const std::vector<std::string>& overrides);
+  /// A parameter sweep: rebuilds the World from t = 0 with its current params and scene values, beside
+  /// one more run per value with key=value applied (as set_compare's run B; at most 5); all are stepped to
+  /// the same times and frames carry them in `sweep`. It replaces an A/B comparison (and set_compare
+  /// replaces it). A value the scene refuses leaves everything as it was and reports the error. No
+  /// values: the sweep stops.
+  void set_sweep(const std::string& key, const std::vector<std::string>& values);
   /// Frames carry Report::inspect(id) (and run B's, when comparing); id < 0: none.
   void set_inspect(std::int64_t id);
   /// Writes the World's whole state to `path` (a checkpoint, as `sph run --checkpoint-every` writes:

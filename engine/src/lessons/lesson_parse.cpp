@@ -98,6 +98,29 @@ void predict_of(const json& s, LessonStep& st, const std::string& origin, const 
   if (st.predict.empty() || st.answer.empty()) fail(origin, p + "predict", "question and answer must not be empty");
 }
 
+/// "sweep": {"key": "kernel.eta", "values": [1.0, 1.5]}: 1 to 5 values, each a configuration the step's
+/// scene accepts; not with a compare check (the GUI shows one or the other).
+void sweep_of(const json& s, LessonStep& st, const std::string& origin, const std::string& p) {
+  if (!s.contains("sweep")) return;
+  const json& w = s["sweep"];
+  if (!w.is_object()) fail(origin, p + "sweep", "must be an object {\"key\": ..., \"values\": [...]}");
+  only_keys(w, {"key", "values"}, origin, p + "sweep");
+  st.sweep_key = text_of(w, "key", true, origin, p + "sweep.");
+  if (!w.contains("values") || !w["values"].is_array() || w["values"].empty() || w["values"].size() > 5)
+    fail(origin, p + "sweep.values", "must be a list of 1 to 5 values");
+  for (const json& v : w["values"]) {
+    if (v.is_number()) st.sweep_values.push_back(exact_text(v.get<double>()));
+    else if (v.is_string()) st.sweep_values.push_back(v.get<std::string>());
+    else fail(origin, p + "sweep.values", "must hold strings or numbers");
+    try {
+      (void)lesson_config(st, {{st.sweep_key, st.sweep_values.back()}});
+    } catch (const ConfigError& e) {
+      fail(origin, p + "sweep", e.what());
+    }
+  }
+  if (st.check.type == LessonCheck::Type::Compare) fail(origin, p + "sweep", "a step with a compare check shows A and B, not a sweep");
+}
+
 /// Every run the check makes can be configured and measures a metric its scene has.
 void validate_runs(const LessonStep& st, const std::string& origin, const std::string& path) {
   std::vector<std::pair<LessonSets, std::string>> runs;  // extra sets, the key they come from
@@ -145,8 +168,8 @@ Lesson parse_lesson(const std::string& text, const std::string& origin) {
     const json& s = doc["steps"][i];
     const std::string path = "steps[" + std::to_string(i) + "]";
     if (!s.is_object()) fail(origin, path, "must be an object");
-    only_keys(s, {"title", "text", "scene", "set", "change", "look_at", "view", "check", "predict", "pause_at"}, origin,
-              path);
+    only_keys(s, {"title", "text", "scene", "set", "change", "look_at", "view", "check", "predict", "pause_at", "sweep"},
+              origin, path);
     const std::string p = path + ".";
     LessonStep st;
     st.title = text_of(s, "title", true, origin, p);
@@ -167,6 +190,7 @@ Lesson parse_lesson(const std::string& text, const std::string& origin) {
     if (!s.contains("check")) fail(origin, p + "check", "missing (every step makes a claim the program checks)");
     st.check = check_of(s["check"], origin, p + "check");
     validate_runs(st, origin, path);
+    sweep_of(s, st, origin, p);
     l.steps.push_back(std::move(st));
   }
   return l;

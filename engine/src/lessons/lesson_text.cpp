@@ -69,6 +69,11 @@ std::string lesson_text(const Lesson& l) {
     if (!st.change.empty()) s += "  change: " + st.change + "\n";
     if (!st.look_at.empty()) s += "  look at: " + st.look_at + "\n";
     if (st.pause_at > 0.0) s += "  pauses at t = " + num(st.pause_at) + "\n";
+    if (!st.sweep_key.empty()) {
+      std::string values;
+      for (const std::string& v : st.sweep_values) values += (values.empty() ? "" : ", ") + v;
+      s += "  sweep: " + st.sweep_key + " = " + values + " beside run A, drawn together\n";
+    }
     if (const std::string v = view_text(st.view); !v.empty()) s += "  view: " + v + "\n";
     s += "  claim: " + claim_text(st) + "\n";
   }

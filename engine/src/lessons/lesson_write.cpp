@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "sph/lesson.h"
+#include "sph/param_table.h"
 #include "text/number_text.h"
 
 namespace sph {
@@ -85,6 +86,14 @@ std::string step_json(const LessonStep& st) {
   if (!st.change.empty()) p.emplace_back("change", json_string(st.change));
   if (!st.look_at.empty()) p.emplace_back("look_at", json_string(st.look_at));
   if (st.pause_at > 0.0) p.emplace_back("pause_at", lesson_number(st.pause_at));
+  if (!st.sweep_key.empty()) {
+    std::string values;
+    for (const std::string& v : st.sweep_values) {
+      double x = 0.0;  // numbers as numbers, choices (M6) as strings
+      values += (values.empty() ? "" : ", ") + (parse_number(v, x) ? lesson_number(x) : json_string(v));
+    }
+    p.emplace_back("sweep", object({{"key", json_string(st.sweep_key)}, {"values", "[" + values + "]"}}));
+  }
   if (const std::string v = view_json(st.view); !v.empty()) p.emplace_back("view", v);
   p.emplace_back("check", check_json(st.check));
   std::string s = "    {\n";

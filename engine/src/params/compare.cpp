@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "sph/kernel.h"
 #include "sph/key_value.h"
 #include "sph/param_table.h"
 #include "text/number_text.h"
@@ -22,8 +23,11 @@ std::string value_of(const RunConfig& cfg, const std::string& key) {
   const std::string text = info->get(cfg.params);
   double v = 0.0;
   if (!parse_number(text, v)) return text;  // a choice: M6, leapfrog, standard
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);  // a label, not a value to read back
+  char buf[48];
+  if (key == "kernel.eta" && v == 0.0 && cfg.scene)  // 0 = the kernel's default: say which
+    std::snprintf(buf, sizeof buf, "%.6g (default)", Kernel(cfg.params.kernel.type, cfg.scene->dim).default_eta());
+  else
+    std::snprintf(buf, sizeof buf, "%.6g", v);  // a label, not a value to read back
   return buf;
 }
 

@@ -5,8 +5,9 @@
 namespace sph::detail {
 
 bool CompareRun::start(const RunConfig& a, const std::vector<std::string>& overrides, std::string* err,
-                       const std::string* state) {
+                       const std::string* state, const std::string& name) {
   stop();
+  name_ = name;
   try {
     if (state)  // a scene value builds other particles, which a loaded state replaces
       for (const std::string& o : overrides)
@@ -16,7 +17,9 @@ bool CompareRun::start(const RunConfig& a, const std::vector<std::string>& overr
     if (state) world_->restore_state(*state, "the loaded state, for run B");
   } catch (const std::exception& e) {
     world_.reset();
-    *err = std::string("compare: run B cannot be built: ") + e.what();
+    std::string list;
+    for (const std::string& o : overrides) list += (list.empty() ? "" : ", ") + o;
+    *err = name + " (" + list + ") cannot be built: " + e.what();
     return false;
   }
   overrides_ = overrides;
@@ -37,7 +40,7 @@ bool CompareRun::follow(const Params& a, std::string* err) {
     world_->set_params(fork_config(cfg, overrides_).params);
     return true;
   } catch (const std::exception& e) {
-    *err = std::string("compare: run B keeps its parameters: ") + e.what();
+    *err = label() + " keeps its parameters: " + e.what();
     return false;
   }
 }
@@ -55,7 +58,7 @@ CompareRun::Advance CompareRun::advance_to(double t, std::string* err, const std
 std::string CompareRun::label() const {
   std::string list;
   for (const std::string& o : overrides_) list += (list.empty() ? "" : ", ") + o;
-  return "run B (" + list + ")";
+  return name_ + " (" + list + ")";
 }
 
 std::string CompareRun::too_slow(double t, double budget) const {

@@ -1,6 +1,7 @@
-// Run B of an A/B comparison, owned by the engine thread beside the first World (run A): built from A's
-// scene, params and scene values with B's overrides applied, stepped to A's times, following A's posted
-// params (with its overrides kept), sampled into a history at A's sampling times.
+// A run that follows the first World (run A) on the engine thread: run B of an A/B comparison, or one run
+// of a parameter sweep (follower_runs.h). Built from A's scene, params and scene values with its overrides
+// applied, stepped to A's times, following A's posted params (with its overrides kept), sampled into a
+// history at A's sampling times.
 #pragma once
 #include <functional>
 #include <memory>
@@ -22,12 +23,12 @@ class CompareRun {
 
   /// Builds B from A's config (at t = 0, or from `state` (World::save_state) when A was loaded from one:
   /// both then go on from the same particles; its history starts empty: sample() with A's first sample);
-  /// false with *err (the comparison is then off).
+  /// false with *err (the comparison is then off). `name` names it in messages ("run B", "sweep run").
   bool start(const RunConfig& a, const std::vector<std::string>& overrides, std::string* err,
-             const std::string* state = nullptr);
+             const std::string* state = nullptr, const std::string& name = "run B");
   /// Rebuilds B with the same overrides from A's new config (a reset, a load, a scene value, a state).
   bool restart(const RunConfig& a, std::string* err, const std::string* state = nullptr) {
-    return start(a, std::vector<std::string>(overrides_), err, state);
+    return start(a, std::vector<std::string>(overrides_), err, state, std::string(name_));
   }
   void stop();
   /// B adopts A's params with its overrides applied again; false with *err if B cannot run them.
@@ -44,6 +45,7 @@ class CompareRun {
  private:
   std::string label() const;  ///< "run B (its overrides)" for messages
   std::unique_ptr<World> world_;
+  std::string name_ = "run B";
   std::vector<std::string> overrides_;
   History history_;
 };

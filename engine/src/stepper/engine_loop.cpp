@@ -138,6 +138,9 @@ void EngineLoop::apply(const Command& c) {
     case K::SetCompare:
       start_compare(c.names);
       break;
+    case K::SetSweep:
+      start_sweep(c.name, c.names);
+      break;
     case K::SaveState:
       save_state(c.name);
       break;
@@ -176,7 +179,7 @@ void EngineLoop::adopt(const InboxBatch& b) {
   try {
     if (world_) world_->set_params(b.params);
     else cfg_.params = b.params;
-    if (world_) compare_.follow(world_->params(), &error_);
+    if (world_) followers_.follow(world_->params(), &error_);
   } catch (const std::exception& e) {  // a physics the scene cannot run: keep the old params, say why
     error_ = e.what();
   }
@@ -200,7 +203,8 @@ void EngineLoop::rebuild(const RunConfig& cfg, const std::string* state, const s
     trails_.record(*world_);
     error_.clear();
     // run B restarts beside A: from t = 0, or from the same loaded state (B at A's time)
-    if (compare_.on() && !compare_.restart(cfg_, &error_, state)) error_ += " (the comparison stopped)";
+    if (followers_.on() && !followers_.restart(cfg_, &error_, state))
+      error_ += followers_.kind() == FollowerRuns::Kind::Sweep ? " (the sweep stopped)" : " (the comparison stopped)";
     sample_history();
     if (at_end_) running_ = true;  // the run had only stopped at t_end: run the new World
     diverged_ = at_end_ = false;
@@ -236,26 +240,49 @@ void EngineLoop::check_loaded_state() {
   }
 }
 
-void EngineLoop::start_compare(const std::vector<std::string>& overrides) {
-  if (overrides.empty()) {
-    compare_.stop();
-    return;
-  }
+bool EngineLoop::restart_a() {
+  followers_.stop();
+  RunConfig a = cfg_;
+  a.params = world_->params();
+  rebuild(a);
+  return world_ != nullptr;
+}
+
+bool EngineLoop::can_follow(const char* what, const std::vector<std::vector<std::string>>& runs) {
   if (!world_) {
-    error_ = "compare: no scene is loaded";
-    return;
+    error_ = std::string(what) + ": no scene is loaded";
+    return false;
   }
   RunConfig a = cfg_;
   a.params = world_->params();
   try {
-    (void)fork_config(a, overrides);  // refused before anything changes
+    for (const std::vector<std::string>& overrides : runs) (void)fork_config(a, overrides);
   } catch (const std::exception& e) {
-    error_ = std::string("compare: ") + e.what();
+    error_ = std::string(what) + ": " + e.what();
+    return false;
+  }
+  return true;
+}
+
+void EngineLoop::start_compare(const std::vector<std::string>& overrides) {
+  if (overrides.empty()) {
+    if (followers_.kind() == FollowerRuns::Kind::Compare) followers_.stop();
     return;
   }
-  compare_.stop();
-  rebuild(a);  // A restarts from t = 0 ...
-  if (world_ && compare_.start(world_->config(), overrides, &error_)) compare_.sample();  // ... and B beside it
+  // A restarts from t = 0 and B beside it
+  if (can_follow("compare", {overrides}) && restart_a() && followers_.start_compare(world_->config(), overrides, &error_))
+    followers_.sample();
+}
+
+void EngineLoop::start_sweep(const std::string& key, const std::vector<std::string>& values) {
+  if (values.empty()) {
+    if (followers_.kind() == FollowerRuns::Kind::Sweep) followers_.stop();
+    return;
+  }
+  std::vector<std::vector<std::string>> runs;
+  for (const std::string& v : values) runs.push_back({key + "=" + v});
+  if (can_follow("sweep", runs) && restart_a() && followers_.start_sweep(world_->config(), key, values, &error_))
+    followers_.sample();
 }
 
 }  // namespace sph::detail

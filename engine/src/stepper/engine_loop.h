@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <memory>
 
-#include "compare_run.h"
+#include "follower_runs.h"
 #include "history.h"
 #include "inbox.h"
 #include "inspect_cache.h"
@@ -47,6 +47,10 @@ class EngineLoop {
   void step();                           // one World::step with its bookkeeping
   void start_recording(double every);
   void start_compare(const std::vector<std::string>& overrides);  // A and B from t = 0; empty: stop
+  void start_sweep(const std::string& key, const std::vector<std::string>& values);  // A and the sweep from t = 0
+  bool restart_a();                      // A from t = 0 with its current params, followers stopped
+  // whether a World is loaded and each run's overrides fit it; else false with error_ ("WHAT: ...")
+  bool can_follow(const char* what, const std::vector<std::vector<std::string>>& runs);
   void sample_history();
   void publish(int record_index = -1);
   bool stepping() const { return world_ && !diverged_ && (running_ || single_steps_ > 0); }
@@ -78,7 +82,7 @@ class EngineLoop {
   History history_;
   TrailLog trails_;                    // orbit trails of few-body scenes, sampled every step
   RateMeter meter_;
-  CompareRun compare_;                 // run B of an A/B comparison (off unless asked for)
+  FollowerRuns followers_;             // run B of an A/B comparison, or a sweep's runs (off unless asked for)
   InspectCache inspect_, inspect_b_;   // the inspected particle in run A and in run B
 };
 

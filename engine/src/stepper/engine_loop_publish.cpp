@@ -59,13 +59,17 @@ void EngineLoop::publish(int record_index) {
   f.record_index = record_index;
   const bool run = stepping() && running_;
   f.inspection = inspect_.refresh(world_.get(), world_serial_, adopted_, run);
-  f.comparing = compare_.on();
+  f.comparing = followers_.kind() == FollowerRuns::Kind::Compare;
   if (f.comparing) {
-    compare_.fill(f.compare);
-    f.compare.inspection = inspect_b_.refresh(compare_.world(), world_serial_, adopted_, run);
+    followers_.run(0).fill(f.compare);
+    f.compare.inspection = inspect_b_.refresh(followers_.run(0).world(), world_serial_, adopted_, run);
   } else {
     f.compare = CompareFrame{};
   }
+  const bool sweeping = followers_.kind() == FollowerRuns::Kind::Sweep;
+  f.sweep_key = sweeping ? followers_.sweep_key() : std::string();
+  f.sweep.resize(sweeping ? followers_.size() : 0);
+  for (std::size_t i = 0; i < f.sweep.size(); ++i) followers_.run(i).fill(f.sweep[i]);
   out_.publish();
   published_.store(serial_, std::memory_order_release);
   last_publish_ = Clock::now();

@@ -41,17 +41,18 @@ void EngineLoop::step() {
   // the program could not quit (the soak test hung in ~Stepper on one): a stop interrupts it, and a B that
   // needs longer than the budget for one step of A ends the comparison, saying so. Other commands wait
   // for B, so that every frame shows both runs at one time.
-  if (!diverged_ && compare_.on()) {
+  if (!diverged_ && followers_.on()) {
     const auto until = Clock::now() + std::chrono::duration_cast<Clock::duration>(
                                           std::chrono::duration<double>(options_.compare_budget));
     const auto enough = [&] { return inbox_.stop_requested() || Clock::now() > until; };
-    switch (compare_.advance_to(world_->time(), &error_, enough)) {
+    std::size_t behind = 0;
+    switch (followers_.advance_to(world_->time(), &error_, enough, &behind)) {
       case CompareRun::Advance::Done: break;
       case CompareRun::Advance::Failed: diverged_ = true; break;
       case CompareRun::Advance::Behind:
         if (inbox_.stop_requested()) return;  // stopping: nothing more is published
-        error_ = compare_.too_slow(world_->time(), options_.compare_budget);
-        compare_.stop();  // A goes on alone
+        error_ = followers_.run(behind).too_slow(world_->time(), options_.compare_budget);
+        followers_.stop();  // A goes on alone
         break;
     }
   }
@@ -105,7 +106,7 @@ void EngineLoop::start_recording(double every) {
 
 void EngineLoop::sample_history() {
   history_.add(history_sample(*world_));
-  compare_.sample();  // at the same time: both histories decimate alike
+  followers_.sample();  // at the same time: every history decimates alike
 }
 
 void EngineLoop::anchor_pacing() {

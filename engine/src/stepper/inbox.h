@@ -28,6 +28,7 @@ struct Command {
     SetRecordInterval, ///< `value` [time units], 0 = stop recording
     SetTreeProbe,      ///< `value`: the particle (snapshot index) whose tree walk frames carry; < 0 = none
     SetCompare,        ///< `names`: run B's overrides (key=value); empty = stop comparing
+    SetSweep,          ///< `name`: the key, `names`: its values (one run each); empty = stop the sweep
     SetInspect,        ///< `value`: the particle id frames inspect; < 0 = none
     SaveState,         ///< write a checkpoint of the World to the file `name` (sph/checkpoint.h)
     LoadState,         ///< build the World from `config` and take over the saved state `state` (from `name`)

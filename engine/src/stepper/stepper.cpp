@@ -100,6 +100,12 @@ void Stepper::set_compare(const std::vector<std::string>& overrides) {
   c.names = overrides;
   impl_->inbox.push(std::move(c));
 }
+void Stepper::set_sweep(const std::string& key, const std::vector<std::string>& values) {
+  Command c = make(Command::Kind::SetSweep);
+  c.name = key;
+  c.names = values;
+  impl_->inbox.push(std::move(c));
+}
 void Stepper::set_inspect(std::int64_t id) { impl_->inbox.push(make(Command::Kind::SetInspect, static_cast<double>(id))); }
 
 void Stepper::set_push(const Push& push) {

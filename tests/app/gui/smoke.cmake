@@ -11,6 +11,8 @@
 #   click: a click on a particle's dot opens the inspector on it;
 #   state: a checkpoint of `sph run` loads with --load-state at its step and time; a CSV given instead exits 3;
 #   push:  a right drag (--push-drag) pushes the gas along the drag;
+#   lesson: a step checked true and one false, a question and its answer, a pause, a sweep, a bad file;
+#           --sweep's errors;
 #   layout: sod (A/B), dam_break, evrard, the blow-up dialog and the help (F1) at 1280x720 and 1600x900,
 #          UI scale 1, 1.5, 2 and 3: no text of the controls, status line, dialogs, plots or the particle
 #          view is cut or drawn over other text (--layout-report: layout_check.h, text_layout.h).
@@ -184,6 +186,25 @@ if(MODE STREQUAL "lesson")
   endif()
   if(NOT out MATCHES "last state: step [0-9]+, t = 0.8\n")
     message(FATAL_ERROR "expected the run paused at the step's pause_at, t = 0.8")
+  endif()
+  # a step's sweep: run A (eta = 2) beside eta = 1.5 and 1, drawn together with each run's L1 at t_end
+  execute_process(COMMAND ${XVFB_RUN} -a ${GUI} --lesson ${REPO}/assets/lessons/kernels_smoothing.json --lesson-step 2
+                  --quit-at-end --quit-after-frames 3000 --config-dir ${OUT}/cfg
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err WORKING_DIRECTORY ${OUT})
+  message("${out}${err}")
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "view legend: exact \\| kernel.eta=2 \\(A\\)   L1_rho = 0.004[0-9]* \\| kernel.eta=1.5   L1_rho = 0.003[0-9]* \\| kernel.eta=1   L1_rho = 0.002[0-9]*\n")
+    message(FATAL_ERROR "expected the step's sweep drawn: three runs with their L1_rho")
+  endif()
+  # --sweep: a value the scene refuses exits 3 naming the flag, a text that is not KEY=V1,V2 exits 2
+  execute_process(COMMAND ${XVFB_RUN} -a ${GUI} --scene sod --sweep kernel.eta=1,9 --quit-after-frames 10
+                  --config-dir ${OUT}/cfg RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err WORKING_DIRECTORY ${OUT})
+  if(NOT rc EQUAL 3 OR NOT err MATCHES "--sweep: .*kernel.eta = 9 is out of range")
+    message(FATAL_ERROR "expected exit 3 naming --sweep and the value:\n${out}${err}")
+  endif()
+  execute_process(COMMAND ${XVFB_RUN} -a ${GUI} --scene sod --sweep kernel.eta --quit-after-frames 10
+                  --config-dir ${OUT}/cfg RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err WORKING_DIRECTORY ${OUT})
+  if(NOT rc EQUAL 2 OR NOT err MATCHES "--sweep: 'kernel.eta' is not KEY=V1,V2")
+    message(FATAL_ERROR "expected exit 2 naming --sweep:\n${out}${err}")
   endif()
   file(WRITE ${OUT}/false.json "{\"title\": \"x\", \"steps\": [{\"title\": \"s\", \"text\": \"t\", \"scene\": \"sod\", \"set\": {\"scene.n_left\": 100}, \"check\": {\"type\": \"below\", \"metric\": \"L1_rho\", \"until\": 0.05, \"limit\": 1e-6}}]}")
   execute_process(COMMAND ${XVFB_RUN} -a ${GUI} --lesson ${OUT}/false.json --lesson-check --quit-after-frames 10

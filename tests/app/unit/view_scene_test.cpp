@@ -30,6 +30,33 @@ TEST(ViewScene, OneRunOrTwoWithTheirLabelsAndErrors) {
   EXPECT_EQ(two.errors_b[1], (std::pair<std::string, double>{"L1_rho", 0.0028}));
 }
 
+TEST(ViewScene, ASweepLabelsEachRunWithItsValue) {
+  StepperFrame f;
+  f.config = RunConfig::from_scene("sod");  // kernel.eta = 0: M4's default, 1.2
+  f.ref_columns = {{"count", "", false}, {"L1_rho", "", true}};
+  f.ref_values = {400, 0.003};
+  f.sweep_key = "kernel.eta";
+  for (const char* v : {"1", "1.5"}) {
+    CompareFrame r;
+    r.overrides = {std::string("kernel.eta=") + v};
+    r.config = f.config;
+    r.config.set("kernel.eta", v, "test");
+    r.ref_values = {400, v[0] == '1' && v[1] == 0 ? 0.0027 : 0.0036};
+    f.sweep.push_back(r);
+  }
+  const render::FrameScene s = view_scene(f);
+  EXPECT_EQ(s.b, nullptr);
+  EXPECT_EQ(s.sweep_key, "kernel.eta");
+  EXPECT_EQ(s.label_a, "kernel.eta=1.2 (default) (A)");
+  EXPECT_EQ(s.value_a, "1.2 (default)");
+  ASSERT_EQ(s.sweep.size(), 2u);
+  EXPECT_EQ(s.sweep[0].snap, &f.sweep[0].snapshot);
+  EXPECT_EQ(s.sweep[0].label, "kernel.eta=1");
+  EXPECT_EQ(s.sweep[1].value, "1.5");
+  EXPECT_EQ(s.sweep[0].errors[1], (std::pair<std::string, double>{"L1_rho", 0.0027}));
+  EXPECT_EQ(s.sweep[1].errors[1], (std::pair<std::string, double>{"L1_rho", 0.0036}));
+}
+
 TEST(ViewScene, HighlightWeightsAreRelativeToTheLargestW) {
   Inspection in;
   in.id = 7;
