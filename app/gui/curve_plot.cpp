@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <string>
 
+#include "ui_look.h"
+
 namespace sph::gui {
 
 void curve_plot(const char* id, const char* x_label, float x0, float x1, const std::vector<Curve>& curves,
@@ -18,7 +20,8 @@ void curve_plot(const char* id, const char* x_label, float x0, float x1, const s
   const ImVec2 p0 = ImGui::GetCursorScreenPos();
   ImGui::InvisibleButton(id, size);
   ImDrawList* dl = ImGui::GetWindowDrawList();
-  const ImU32 axis = IM_COL32(150, 150, 160, 255), grid = IM_COL32(70, 70, 78, 255);
+  const PlotLook look = plot_look();
+  const ImU32 axis = look.axis, grid = look.grid;
   // Value range over all curves (with 0 unless left out).
   float lo = include_zero ? 0.f : INFINITY, hi = include_zero ? 0.f : -INFINITY;
   for (const Curve& c : curves)
@@ -46,7 +49,7 @@ void curve_plot(const char* id, const char* x_label, float x0, float x1, const s
                                   ImGui::CalcTextSize(middle.c_str()).x, 2.7f * fh});
   // Plot box, leaving room for the value labels and the x label.
   const ImVec2 a(p0.x + label_w + 6.f, p0.y + 4.f), b(p0.x + size.x - 4.f, p0.y + size.y - 1.4f * fh);
-  dl->AddRectFilled(a, b, IM_COL32(36, 36, 42, 255));
+  dl->AddRectFilled(a, b, look.fill);
   auto X = [&](float x) { return a.x + (x - x0) / (x1 - x0) * (b.x - a.x); };
   auto Y = [&](float y) { return b.y - (y - lo) / (hi - lo) * (b.y - a.y); };
   if (lo < 0.f && hi > 0.f) dl->AddLine(ImVec2(a.x, Y(0.f)), ImVec2(b.x, Y(0.f)), grid);
@@ -122,7 +125,7 @@ void curve_plot(const char* id, const char* x_label, float x0, float x1, const s
     const float w = ImGui::CalcTextSize(label.c_str()).x;
     const float lx = std::max(a.x + 4.f, b.x - w - 30.f);
     dl->AddLine(ImVec2(lx, ly + 0.5f * fh), ImVec2(lx + 20.f, ly + 0.5f * fh), c.color, 2.f);
-    dl->AddText(ImVec2(lx + 24.f, ly), IM_COL32(225, 225, 230, 255), label.c_str());
+    dl->AddText(ImVec2(lx + 24.f, ly), look.text, label.c_str());
     ly += fh + 2.f;
   }
 }

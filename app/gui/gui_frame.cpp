@@ -79,6 +79,7 @@ void apply_look(GuiState& s, UiLook* applied) {
   if (s.look == *applied) return;
   bool fallback = false;
   s.look_text = apply_ui_look(s.look, true, &fallback);
+  s.view.high_contrast = s.look.high_contrast;  // the particle view's axes, labels and legends too
   if (s.look.scale != applied->scale && (s.view.text_scale == 0 || s.view.text_scale == static_cast<int>(std::lround(applied->scale))))
     s.view.text_scale = s.look.scale > 1.f ? static_cast<int>(std::lround(s.look.scale)) : 0;
   char b[64];

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "converge_job.h"
+#include "ui_look.h"
 #include "panels.h"
 
 namespace sph::gui {
@@ -46,7 +47,8 @@ void loglog_plot(const ConvergenceResult& r) {
   const ImVec2 p0 = ImGui::GetCursorScreenPos(), p1(p0.x + size.x, p0.y + size.y);
   ImGui::InvisibleButton("##loglog", size);
   ImDrawList* dl = ImGui::GetWindowDrawList();
-  dl->AddRect(p0, p1, IM_COL32(160, 160, 170, 255));
+  const PlotLook look = plot_look();
+  dl->AddRect(p0, p1, look.axis);
   std::vector<float> x, y;
   for (const ConvergenceRun& run : r.runs) {
     if (!(run.error > 0.0)) continue;
@@ -69,9 +71,9 @@ void loglog_plot(const ConvergenceResult& r) {
   for (std::size_t k = 0; k < x.size(); ++k) dl->AddCircleFilled(at(x[k], y[k]), 4.f, IM_COL32(90, 200, 255, 255));
   char buf[96];
   std::snprintf(buf, sizeof buf, "log10 %s  (slope %.2f)", r.column.c_str(), r.slope);
-  dl->AddText(ImVec2(p0.x + 4, p0.y + 2), IM_COL32(235, 235, 240, 255), buf);
+  dl->AddText(ImVec2(p0.x + 4, p0.y + 2), look.text, buf);
   std::snprintf(buf, sizeof buf, "log10 h: %.2f ... %.2f", x0, x1);
-  dl->AddText(ImVec2(p0.x + 4, p1.y - ImGui::GetFontSize() - 2), IM_COL32(160, 160, 170, 255), buf);
+  dl->AddText(ImVec2(p0.x + 4, p1.y - ImGui::GetFontSize() - 2), look.dim_text, buf);
 }
 
 }  // namespace

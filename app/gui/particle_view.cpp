@@ -25,7 +25,7 @@ bool same_view(const render::ViewSettings& a, const render::ViewSettings& b) {
          a.size_mode == b.size_mode && a.h_scale == b.h_scale && a.point_px == b.point_px &&
          a.min_radius_px == b.min_radius_px && a.show_exact == b.show_exact && a.show_walls == b.show_walls &&
          a.show_outlines == b.show_outlines && a.profile_axis == b.profile_axis && a.text_scale == b.text_scale &&
-         a.panels == b.panels && a.residuals == b.residuals;
+         a.panels == b.panels && a.residuals == b.residuals && a.high_contrast == b.high_contrast;
 }
 
 bool ParticleView::init(std::string* err) { return renderer_.init(&Window::get_proc, err); }

@@ -12,6 +12,8 @@
 namespace sph::gui {
 namespace {
 
+bool g_high_contrast = false;  // the look apply_ui_look applied last (plot_look); the GUI thread only
+
 /// The dark theme with square corners (rounded ones cost a software rasteriser ~20% of the panels' time).
 void base_style(bool high_contrast) {
   ImGuiStyle& s = ImGui::GetStyle();
@@ -78,8 +80,17 @@ std::string apply_ui_look(const UiLook& look, bool gl_ready, bool* fallback) {
     ImGui_ImplOpenGL3_CreateFontsTexture();
   }
   base_style(look.high_contrast);
+  g_high_contrast = look.high_contrast;
   ImGui::GetStyle().ScaleAllSizes(look.scale);
   return what;
+}
+
+PlotLook plot_look() {
+  if (g_high_contrast)
+    return {IM_COL32(255, 255, 255, 255), IM_COL32(110, 110, 116, 255), IM_COL32(0, 0, 0, 255), IM_COL32(255, 255, 255, 255),
+            IM_COL32(235, 235, 235, 255)};
+  return {IM_COL32(150, 150, 160, 255), IM_COL32(70, 70, 78, 255), IM_COL32(36, 36, 42, 255), IM_COL32(225, 225, 230, 255),
+          IM_COL32(160, 160, 170, 255)};
 }
 
 }  // namespace sph::gui

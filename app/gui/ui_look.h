@@ -27,6 +27,13 @@ std::string ui_font_path();
 /// is used instead (the text says so).
 std::string apply_ui_look(const UiLook& look, bool gl_ready, bool* fallback);
 
+/// Colours (ImU32, ABGR) of the GUI's own plots: the curve plots, the kernel explorer, the convergence
+/// panel's log-log plot; white on black in the high-contrast look (the last apply_ui_look's).
+struct PlotLook {
+  unsigned int axis, grid, fill, text, dim_text;
+};
+PlotLook plot_look();
+
 /// The scale after `steps` Ctrl+= (+1 each) or Ctrl+- (-1 each) presses, on the grid of kUiScaleStep and
 /// clamped to [kUiScaleMin, kUiScaleMax] (steps = 0: a slider's value put on the grid).
 inline float step_ui_scale(float scale, int steps) {

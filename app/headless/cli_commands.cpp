@@ -68,6 +68,8 @@ void add_frame_options(CLI::App* run, CommandLine& cl) {
   run->add_flag("--residuals", cl.run.residuals,
                 "profiles with an exact curve: a strip of the values minus the exact ones under each panel (a "
                 "comparison always has one: B - A in 1D)");
+  run->add_flag("--high-contrast", cl.run.high_contrast,
+                "frames with white-on-black axes, labels and legends (as sph-gui --high-contrast, for a projector)");
   run->add_option("--cut", cl.run.cut, "3D scenes: a cutaway, only the particles with AXIS <= VALUE drawn, e.g. z=0");
   run->add_option("--profile-axis", cl.run.profile_axis,
                   "2D scenes: plot the field against x or y (with its reference curve) instead of the plane; off");

@@ -26,6 +26,7 @@ struct RunOptions {
   bool log_scale = false;
   bool linear = false;              ///< --linear: no automatic log10 colour scale
   bool residuals = false;           ///< --residuals: profiles with a strip of the error against the exact curve
+  bool high_contrast = false;       ///< --high-contrast: white-on-black axes, labels and legends (a projector)
   std::string cut;                  ///< --cut AXIS=VALUE: 3D cutaway (e.g. z=0), empty: none
   std::string profile_axis = "off";  ///< 2D scenes: "x" or "y" plots the field against that coordinate
   std::string video;

@@ -60,6 +60,7 @@ std::string options_json(const RunOptions& opt) {
     f["log"] = opt.log_scale;
     f["linear"] = opt.linear;
     f["residuals"] = opt.residuals;
+    f["high_contrast"] = opt.high_contrast;
     f["cut"] = opt.cut;
     f["profile_axis"] = opt.profile_axis;
     f["panels"] = opt.panels;
@@ -121,6 +122,7 @@ RunOptions options_from_json(const std::string& text, const std::string& path) {
       o.log_scale = f.at("log").get<bool>();
       o.linear = f.value("linear", false);  // checkpoints written before --linear existed
       o.residuals = f.value("residuals", false);
+      o.high_contrast = f.value("high_contrast", false);  // checkpoints written before --high-contrast existed
       o.cut = f.value("cut", std::string());
       o.profile_axis = f.at("profile_axis").get<std::string>();
       o.panels = f.at("panels").get<std::string>();

@@ -58,6 +58,7 @@ std::unique_ptr<FrameRecorder> make_recorder(const RunOptions& opt) {
   fo.log_scale = opt.log_scale;
   fo.auto_log = !opt.linear;
   fo.residuals = opt.residuals;
+  fo.high_contrast = opt.high_contrast;
   if (!opt.cut.empty() && !parse_cut(opt.cut, &fo.cut_axis, &fo.cut_at))
     throw ConfigError("--cut " + opt.cut + ": expected AXIS=VALUE with AXIS x, y or z, e.g. z=0");
   fo.profile_axis = opt.profile_axis;

@@ -59,10 +59,10 @@ void add_axes(FrameBuild& f, const PixelRect& box, const AxesRanges& r, const Ax
   const Ticks yt = nice_ticks(r.y0, r.y1, y_tick_target(box.h, s));
   for (double x : xt.values) {
     const float X = crisp(px(x));
-    if (style.grid) f.under.line(X, box.y, X, box.bottom(), 1.f, palette::kGrid);
-    f.over.line(X, box.bottom(), X, box.bottom() + kTick * s, lw, palette::kAxis);
+    if (style.grid) f.under.line(X, box.y, X, box.bottom(), 1.f, f.pal.grid);
+    f.over.line(X, box.bottom(), X, box.bottom() + kTick * s, lw, f.pal.axis);
     if (style.x_labels)
-      f.text.add(format_tick(x, xt.step), X, box.bottom() + (kTick + kGap) * s, s, palette::kText, Align::Center);
+      f.text.add(format_tick(x, xt.step), X, box.bottom() + (kTick + kGap) * s, s, f.pal.text, Align::Center);
   }
   // labels a line apart at least: in a box too short for that, only the label nearest its middle
   const float spacing = yt.values.size() > 1 ? box.h * static_cast<float>(yt.step / (r.y1 - r.y0)) : box.h;
@@ -72,16 +72,16 @@ void add_axes(FrameBuild& f, const PixelRect& box, const AxesRanges& r, const Ax
     if (std::abs(y - middle) < std::abs(only - middle)) only = y;
   for (double y : yt.values) {
     const float Y = crisp(py(y));
-    if (style.grid) f.under.line(box.x, Y, box.right(), Y, 1.f, palette::kGrid);
-    f.over.line(box.x - kTick * s, Y, box.x, Y, lw, palette::kAxis);
+    if (style.grid) f.under.line(box.x, Y, box.right(), Y, 1.f, f.pal.grid);
+    f.over.line(box.x - kTick * s, Y, box.x, Y, lw, f.pal.axis);
     if (spacing >= lh || y == only)
-      f.text.add(format_tick(y, yt.step), box.x - (kTick + kGap) * s, Y - 0.5f * lh, s, palette::kText, Align::Right);
+      f.text.add(format_tick(y, yt.step), box.x - (kTick + kGap) * s, Y - 0.5f * lh, s, f.pal.text, Align::Right);
   }
-  f.over.rect_outline({box.x - lw, box.y - lw, box.w + 2 * lw, box.h + 2 * lw}, lw, palette::kAxis);
+  f.over.rect_outline({box.x - lw, box.y - lw, box.w + 2 * lw, box.h + 2 * lw}, lw, f.pal.axis);
   if (style.x_labels)
-    f.text.add(style.x_title, box.x + 0.5f * box.w, box.bottom() + (kTick + 2 * kGap) * s + lh, s, palette::kText,
+    f.text.add(style.x_title, box.x + 0.5f * box.w, box.bottom() + (kTick + 2 * kGap) * s + lh, s, f.pal.text,
                Align::Center);
-  f.text.add(style.y_title, box.x, box.y - lh - kGap * s, s, palette::kText);
+  f.text.add(style.y_title, box.x, box.y - lh - kGap * s, s, f.pal.text);
 }
 
 }  // namespace sph::render

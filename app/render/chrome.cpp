@@ -60,16 +60,16 @@ void add_title(FrameBuild& f, const sph::Snapshot& snap, const ShownField& shown
   const FrameLayout& L = f.layout;
   const int s = L.text_scale;
   if (!snap.title.empty()) {
-    f.text.add(snap.title, L.title.x, L.title.y, s, palette::kText);
+    f.text.add(snap.title, L.title.x, L.title.y, s, f.pal.text);
     return;
   }
   const std::string scene = snap.scene.empty() ? "sph" : snap.scene;
   const std::string title = scene + "  t = " + time_string(snap.t) + "  step " + std::to_string(snap.step);
   float x = L.title.x;
-  x += f.text.add(title, x, L.title.y, s, palette::kText);
+  x += f.text.add(title, x, L.title.y, s, f.pal.text);
   const std::string count = "   N = " + std::to_string(snap.count) + "  (" + std::to_string(snap.dim) + "D)";
   if (x + f.text.measure(count, s) <= L.title.right())  // only where it fits (a projector's 3x text: not)
-    x += f.text.add(count, x, L.title.y, s, palette::kDimText);
+    x += f.text.add(count, x, L.title.y, s, f.pal.dim_text);
   if (!shown.warning.empty()) f.text.add(shown.warning, L.title.right(), L.title.y, s, palette::kWarning, Align::Right);
 }
 
@@ -106,7 +106,7 @@ void add_colorbar(FrameBuild& f, const ShownField& shown) {
     const float yb = bar.bottom() - bar.h * static_cast<float>(i + 1) / n;
     f.over.vertical_gradient({bar.x, yb, bar.w, ya - yb}, entry(i), entry(i + 1));
   }
-  f.over.rect_outline({bar.x - 1.f, bar.y - 1.f, bar.w + 2.f, bar.h + 2.f}, 1.f, palette::kAxis);
+  f.over.rect_outline({bar.x - 1.f, bar.y - 1.f, bar.w + 2.f, bar.h + 2.f}, 1.f, f.pal.axis);
 
   // Ticks and values on the right: max at the top, min at the bottom, round values between.
   const ValueRange& r = shown.range;
@@ -115,21 +115,21 @@ void add_colorbar(FrameBuild& f, const ShownField& shown) {
   auto y_of = [&](double v) { return bar.bottom() - bar.h * static_cast<float>((v - r.min) / (r.max - r.min)); };
   auto tick = [&](float y, const std::string& label, Rgba color) {
     const float yc = std::floor(y) + 0.5f;
-    f.over.line(tick_x0, yc, tick_x1, yc, 1.f * s, palette::kAxis);
+    f.over.line(tick_x0, yc, tick_x1, yc, 1.f * s, f.pal.axis);
     f.text.add(label, text_x, y - 0.5f * lh, s, color);
   };
-  tick(bar.y, format_value(r.max), palette::kText);
-  tick(bar.bottom(), format_value(r.min), palette::kText);
+  tick(bar.y, format_value(r.max), f.pal.text);
+  tick(bar.bottom(), format_value(r.min), f.pal.text);
   const Ticks t = bar_ticks(r);
   for (double v : t.values) {
     const float y = y_of(v);
-    if (y - bar.y > 1.8f * lh && bar.bottom() - y > 1.8f * lh) tick(y, format_tick(v, t.step), palette::kDimText);
+    if (y - bar.y > 1.8f * lh && bar.bottom() - y > 1.8f * lh) tick(y, format_tick(v, t.step), f.pal.dim_text);
   }
   // Field label above the bar (cut with "..." if the panel is too narrow).
   std::string label = shown.label;
   while (label.size() > 4 && f.text.measure(label, s) > L.panel.w + L.margin)
     label = label.substr(0, label.size() - 4) + "...";
-  f.text.add(label, bar.x, bar.y - gap - 1.5f * lh, s, palette::kText);
+  f.text.add(label, bar.x, bar.y - gap - 1.5f * lh, s, f.pal.text);
 }
 
 }  // namespace sph::render

@@ -48,13 +48,13 @@ std::string short_label(const std::string& label, bool values_only) {
 void mini_colorbar(FrameBuild& f, float x, float y, Colormap cmap, const ValueRange& r) {
   const int s = f.layout.text_scale;
   const float lh = f.text.line_height(s), w = 90.f * s, h = 0.6f * lh;
-  x += f.text.add(format_value(r.min), x, y, s, palette::kText) + 4.f * s;
+  x += f.text.add(format_value(r.min), x, y, s, f.pal.text) + 4.f * s;
   const int bands = 32;
   for (int k = 0; k < bands; ++k) {
     const Rgb c = colormap_rgb(cmap, (k + 0.5f) / bands);
     f.over.fill_rect({x + w * k / bands, y + 0.2f * lh, w / bands + 0.5f, h}, {c.r, c.g, c.b, 1.f});
   }
-  f.text.add(format_value(r.max), x + w + 4.f * s, y, s, palette::kText);
+  f.text.add(format_value(r.max), x + w + 4.f * s, y, s, f.pal.text);
 }
 
 }  // namespace
@@ -136,7 +136,7 @@ void compose_compare(FrameBuild& f, const FrameScene& scene, const ViewSettings&
     dv.show_tree = false;
     compose_plane(f, a, dv, sd);
     const ParticleBatch& d = f.detach_primary(0, Colormap::Coolwarm, sd.range, {palette::kNoField, palette::kWall});
-    caption(2, "B - A (nearest B particle)", palette::kText);
+    caption(2, "B - A (nearest B particle)", f.pal.text);
     // its colour bar under the panel's x axis title
     mini_colorbar(f, d.rect.x, d.rect.bottom() + 13.f * s + 2.5f * lh, Colormap::Coolwarm, sd.range);
   }

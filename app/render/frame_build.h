@@ -11,6 +11,7 @@
 #include "cpu_splat.h"
 #include "field_range.h"
 #include "frame_layout.h"
+#include "palette.h"
 #include "shape_batch.h"
 #include "text_batch.h"
 
@@ -56,7 +57,8 @@ struct FrameBuild {
   explicit FrameBuild(const FontAtlas& font) : text(font) {}
 
   FrameLayout layout;
-  PixelRect fill;      ///< plot background, cleared to palette::kPlotFill when non-empty
+  palette::Chrome pal = palette::kStandard;  ///< the frame's chrome colours (ViewSettings::high_contrast)
+  PixelRect fill;      ///< plot background, cleared to pal.plot_fill when non-empty
   ShapeBatch under;    ///< before the particles (grid, domain outline, hidden box edges)
   ShapeBatch clipped;  ///< after the particles, scissored to the plot (exact curves)
   ShapeBatch over;     ///< after the particles (axes, colour bar, legend)

@@ -99,7 +99,7 @@ void add_highlight(FrameBuild& f, const Highlight& h, bool profile) {
       }
       if (static_cast<std::int64_t>(i) == h.index && pixel_of(set, k, &px, &py)) {
         ring(f.over, px, py, r0 + 2.f * s, 2.f * s + 2.f, palette::kOutlineHalo);
-        ring(f.over, px, py, r0 + 2.f * s, 1.5f * s, palette::kText);
+        ring(f.over, px, py, r0 + 2.f * s, 1.5f * s, f.pal.text);
         if (h.support > 0.f) support_mark(f.over, set, k, h.support, profile, 1.f * s);
       }
     }

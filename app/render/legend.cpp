@@ -63,7 +63,7 @@ bool add_legend(FrameBuild& f, const PixelRect& box, std::span<const LegendEntry
   }
   const PixelRect r = place_legend(box, w, h, pad, clear, avoid_xy);
   f.layout.legend = r;
-  f.over.fill_rect(r, palette::kLegendFill);
+  f.over.fill_rect(r, f.pal.legend_fill);
   const float x0 = r.x + pad, x1 = x0 + sample;
   float y = r.y + pad + 0.5f * lh;  // centre of the row
   for (const LegendEntry& e : entries) {
@@ -73,7 +73,7 @@ bool add_legend(FrameBuild& f, const PixelRect& box, std::span<const LegendEntry
       if (e.halo.a > 0.f) f.over.line(x0, y, x1, y, e.size + 2.f, e.halo);
       f.over.line(x0, y, x1, y, e.size, e.color);
     }
-    f.text.add(e.label, x1 + pad, y - 0.5f * lh, s, palette::kText);
+    f.text.add(e.label, x1 + pad, y - 0.5f * lh, s, f.pal.text);
     f.layout.legend_rows.push_back(e.label);
     y += lh + gap;
   }

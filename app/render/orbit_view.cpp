@@ -43,7 +43,7 @@ void add_box(FrameBuild& f, const Bounds& b, const Vec3f& eye, int up_axis) {
       const Vec3f p = corner(b, k), q = corner(b, k2);
       if (!L.to_pixel(p.x, p.y, p.z, &x0, &y0) || !L.to_pixel(q.x, q.y, q.z, &x1, &y1)) continue;
       // Hidden (both faces turned away): behind every particle inside; otherwise drawn on top.
-      (visible ? f.over : f.under).line(x0, y0, x1, y1, lw, palette::kDomain);
+      (visible ? f.over : f.under).line(x0, y0, x1, y1, lw, f.pal.domain);
       const float mx = 0.5f * (x0 + x1), my = 0.5f * (y0 + y1);
       const float score = axis == up_axis ? -mx : my;
       if (visible && score > best_score[axis]) {
@@ -57,7 +57,7 @@ void add_box(FrameBuild& f, const Bounds& b, const Vec3f& eye, int up_axis) {
   const char* names[3] = {"x", "y", "z"};
   for (int axis = 0; axis < 3; ++axis)
     if (best_score[axis] > -INFINITY)
-      f.text.add(names[axis], label_x[axis], label_y[axis] - 0.5f * lh, s, palette::kText, Align::Center);
+      f.text.add(names[axis], label_x[axis], label_y[axis] - 0.5f * lh, s, f.pal.text, Align::Center);
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
 // Colours of everything that is not data (and of wall particles): a dark-grey theme readable on a
-// projector.
+// projector, and a white-on-black one for high contrast (Chrome).
 #pragma once
 #include "overlay_types.h"
 
@@ -27,5 +27,17 @@ inline constexpr Rgba kOutlines[8] = {
     {0.55f, 0.90f, 0.45f, 1.f}, {1.00f, 0.45f, 0.35f, 1.f}, {0.75f, 0.60f, 1.00f, 1.f}, {0.30f, 0.85f, 0.80f, 1.f}};
 inline constexpr Rgba kOutlineHalo{0.04f, 0.04f, 0.05f, 1.f};  ///< dark rim under the outlines
 inline constexpr Rgba kKernelSupport{0.55f, 0.85f, 1.00f, 1.f};  ///< the inspected particle's kernel support
+
+/// The colours of the frame around the data, chosen per frame (ViewSettings::high_contrast): the dark-grey
+/// theme above, or white on black for a washed-out projector (every label white, a brighter grid, an
+/// opaque legend box).
+struct Chrome {
+  Rgba background, plot_fill, axis, grid, domain, text, dim_text, legend_fill;
+};
+inline constexpr Chrome kStandard{kBackground, kPlotFill, kAxis, kGrid, kDomain, kText, kDimText, kLegendFill};
+inline constexpr Chrome kHighContrast{{0.f, 0.f, 0.f, 1.f},       {0.035f, 0.035f, 0.04f, 1.f}, {1.f, 1.f, 1.f, 1.f},
+                                      {0.42f, 0.42f, 0.44f, 1.f}, {0.85f, 0.85f, 0.88f, 1.f},   {1.f, 1.f, 1.f, 1.f},
+                                      {0.95f, 0.95f, 0.95f, 1.f}, {0.f, 0.f, 0.f, 0.94f}};
+inline const Chrome& chrome(bool high_contrast) { return high_contrast ? kHighContrast : kStandard; }
 
 }  // namespace sph::render::palette

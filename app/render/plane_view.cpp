@@ -42,7 +42,7 @@ void compose_plane(FrameBuild& f, const sph::Snapshot& snap, const ViewSettings&
   float x0 = 0.f, y0 = 0.f, x1 = 0.f, y1 = 0.f;
   if (L.to_pixel(snap.bounds[0], snap.bounds[2], 0.f, &x0, &y1) && L.to_pixel(snap.bounds[1], snap.bounds[3], 0.f, &x1, &y0) &&
       x1 > x0 && y1 > y0) {
-    f.under.rect_outline({x0 - 1.f, y0 - 1.f, x1 - x0 + 2.f, y1 - y0 + 2.f}, 1.f, palette::kDomain);
+    f.under.rect_outline({x0 - 1.f, y0 - 1.f, x1 - x0 + 2.f, y1 - y0 + 2.f}, 1.f, f.pal.domain);
   }
 
   const bool from_h = view.size_mode == SizeMode::Smoothing && has_smoothing_lengths(snap);

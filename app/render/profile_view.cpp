@@ -71,7 +71,7 @@ void add_run_header(FrameBuild& f, const FrameScene& scene, const std::vector<Pa
   const int s = f.layout.text_scale;
   const float lh = f.text.line_height(s);
   float x = area.x;
-  if (!scene.b) x += f.text.add(scene.sweep_key + ":", x, area.y, s, palette::kText) + 1.5f * lh;
+  if (!scene.b) x += f.text.add(scene.sweep_key + ":", x, area.y, s, f.pal.text) + 1.5f * lh;
   for (const PanelRun& r : runs)
     x += f.text.add(scene.b ? r.label : r.short_label, x, area.y, s, r.colour) + (scene.b ? 3.f : 1.5f) * lh;
   area.y += lh + f.layout.margin;

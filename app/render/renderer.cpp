@@ -142,6 +142,7 @@ void Renderer::compose(FrameBuild& f, const FrameScene& scene, const ViewSetting
                        int width, int height) {
   const sph::Snapshot& snap = *scene.a;
   f.clear();
+  f.pal = palette::chrome(view.high_contrast);
   const int axis = snap.dim == 1 ? 0 : view.profile_axis;
   const bool profile = draws_profile(snap.dim, axis);
   std::vector<std::string> fields = panel_fields(snap, view.panels);
@@ -163,7 +164,7 @@ void Renderer::compose(FrameBuild& f, const FrameScene& scene, const ViewSetting
   if (!profile && !scene.sweep.empty()) {  // a sweep's runs have no place in a particle view: say where they are
     const float lh = f.text.line_height(f.layout.text_scale);
     f.text.add("sweep: its runs are drawn in the profile views", f.layout.plot.x + 0.5f * lh,
-               f.layout.plot.bottom() - 1.5f * lh, f.layout.text_scale, palette::kDimText);
+               f.layout.plot.bottom() - 1.5f * lh, f.layout.text_scale, f.pal.dim_text);
   }
   add_colorbar(f, bar);
   add_title(f, snap, shown);
@@ -185,7 +186,7 @@ void Renderer::draw(Impl& d, const ShownField& shown, int width, int height) {
   gl.Enable(GL_BLEND);
   gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   gl.Viewport(0, 0, width, height);
-  const Rgba bg = palette::kBackground, fill = palette::kPlotFill;
+  const Rgba bg = f.pal.background, fill = f.pal.plot_fill;
   gl.ClearColor(bg.r, bg.g, bg.b, 1.f);
   gl.ClearDepth(1.0);
   gl.DepthMask(GL_TRUE);

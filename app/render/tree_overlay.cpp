@@ -52,13 +52,13 @@ void add_tree_overlay(FrameBuild& f, const sph::Snapshot& snap) {
   if (L.to_pixel(snap.x[i], snap.y[i], snap.dim == 3 ? snap.z[i] : 0.f, &cx, &cy)) {
     const float r = 5.f * static_cast<float>(s);
     f.clipped.disc(cx, cy, r + 1.5f * static_cast<float>(s), palette::kOutlineHalo);
-    f.clipped.disc(cx, cy, r, palette::kText);
+    f.clipped.disc(cx, cy, r, f.pal.text);
   }
   const std::string caption = "tree walk of particle " + std::to_string(i) + ": " + std::to_string(whole) +
                               " cells whole (blue), " + std::to_string(snap.tree_cells.size() - whole) +
                               " leaves pair by pair (amber)";
   const float lh = f.text.line_height(s);
-  f.text.add(caption, L.plot.x + 0.5f * lh, L.plot.y + 0.4f * lh, s, palette::kText, Align::Left);
+  f.text.add(caption, L.plot.x + 0.5f * lh, L.plot.y + 0.4f * lh, s, f.pal.text, Align::Left);
 }
 
 }  // namespace sph::render

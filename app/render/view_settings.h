@@ -55,6 +55,7 @@ struct ViewSettings {
   /// Profiles with an exact curve: under each panel a strip of each run's values minus the exact ones
   /// (profile_residual.h); a comparison (A/B) always has it.
   bool residuals = false;
+  bool high_contrast = false;  ///< white-on-black chrome (palette::kHighContrast): axes, labels, legends
   bool show_walls = true;      ///< 2D/3D: draw wall particles (in palette::kWall); profiles never show them
   bool show_tree = true;       ///< 2D/3D: draw the snapshot's Barnes-Hut cells (render::add_tree_overlay) when it has them
   bool show_outlines = true;   ///< 2D: draw the snapshot's reference outlines over the particles
