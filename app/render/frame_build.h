@@ -51,6 +51,7 @@ struct ParticleBatch {
   ValueRange range;
   FixedColors colors;
   ShapeBatch clipped;                ///< drawn after the particles, scissored to rect (exact curves)
+  bool opaque = false;               ///< fill cleared again just before it is drawn: it hides what is under it
 };
 
 struct FrameBuild {

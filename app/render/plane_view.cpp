@@ -4,6 +4,7 @@
 
 #include "axes.h"
 #include "outline_overlay.h"
+#include "plane_inset.h"
 #include "tree_overlay.h"
 #include "palette.h"
 #include "particle_instances.h"
@@ -52,6 +53,7 @@ void compose_plane(FrameBuild& f, const sph::Snapshot& snap, const ViewSettings&
 
   if (view.show_outlines) add_outlines(f, snap);  // over the particles, clipped to the plot
   if (view.show_tree) add_tree_overlay(f, snap);
+  add_plane_inset(f, snap, view, shown);
 }
 
 }  // namespace sph::render

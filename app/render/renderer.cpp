@@ -213,7 +213,8 @@ void Renderer::draw(Impl& d, const ShownField& shown, int width, int height) {
   scissor(plot);
   d.overlay.draw_shapes(gl, f.clipped, width, height);
   gl.Disable(GL_SCISSOR_TEST);
-  for (const ParticleBatch& b : f.batches) {  // the other plots: panels, run B, the difference map
+  for (const ParticleBatch& b : f.batches) {  // the other plots: panels, run B, the difference map, an inset
+    if (b.opaque) clear_fill(b.fill);
     set_viewport(gl, b.rect, height);
     d.particles.draw(gl, ParticleDraw::of(b), b.cmap, b.range, b.colors);
     gl.Viewport(0, 0, width, height);

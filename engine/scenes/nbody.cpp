@@ -109,6 +109,7 @@ SPH_SCENE(140, solar_system_scene) {
   s.energy_bound = 1e-6;  // measured to t = 100: 2.7e-8
   s.error_bounds = {{"dE", 1e-6}, {"dL", 1e-10}};  // measured to t = 100: 7.6e-8, 2.0e-14
   s.build = [](const Params& prm, const SceneValues&) { return bodies_setup(prm, 2, solar_bodies(), 42.0); };
+  s.inset = {0.0, 0.0, 1.8, "inner planets"};  // Mars's aphelion 1.67 AU; the whole view is 84 AU wide
   s.reference = [](const Params& prm, const SceneValues&) {
     return make_conservation_reference(solar_bodies(), prm.gravity.G, prm.gravity.eps);
   };

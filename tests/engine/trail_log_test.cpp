@@ -90,10 +90,10 @@ TEST(TrailLog, KeplerReferenceDrawsTheExactEllipse) {
 }
 
 TEST(TrailLog, TheGuisStepperPublishesTheTrailOfEveryStep) {
-  // the GUI's engine thread runs two years of the Earth's orbit (1000 steps) as fast as it can; its frames
+  // the GUI's engine thread runs a year of the Earth's orbit (500 steps) as fast as it can; its frames
   // carry the trail of every step, however few of them a display would draw
   RunConfig cfg = RunConfig::from_scene("kepler");
-  cfg.params.time.t_end = 2.0;
+  cfg.params.time.t_end = 1.0;
   StepperOptions opt;
   opt.start_running = true;
   Stepper s(cfg, opt);
@@ -111,7 +111,46 @@ TEST(TrailLog, TheGuisStepperPublishesTheTrailOfEveryStep) {
   // a step moves the Earth 2 pi 0.002 AU, more than the spacing (2e-3 of the first extent, 1 AU): a vertex
   // per step, the start included
   EXPECT_EQ(planet, static_cast<std::size_t>(f->snapshot.step) + 1);
-  EXPECT_EQ(f->snapshot.step, 1000);
+  EXPECT_EQ(f->snapshot.step, 500);
+}
+
+/// Revolutions of a trail about (cx, cy), unwrapped.
+double turns_of(const Outline& o, double cx, double cy) {
+  double turned = 0.0;
+  for (std::size_t k = 1; k < o.x.size(); ++k) {
+    double d = std::atan2(o.y[k] - cy, o.x[k] - cx) - std::atan2(o.y[k - 1] - cy, o.x[k - 1] - cx);
+    if (d > std::numbers::pi) d -= 2 * std::numbers::pi;
+    if (d < -std::numbers::pi) d += 2 * std::numbers::pi;
+    turned += d;
+  }
+  return std::abs(turned) / (2 * std::numbers::pi);
+}
+
+TEST(TrailLog, ATrailShowsItsLastRevolutionAndAQuarter) {
+  // 20 years of the Solar System: Mercury goes round 83 times (its trail, each turn a little turned, was an
+  // annulus), Pluto not once (its whole trail stays)
+  RunConfig cfg = RunConfig::from_scene("solar_system");
+  World w(cfg);
+  TrailLog t;
+  t.record(w);
+  while (w.time() < 20.0) {
+    w.step(20.0 - w.time());
+    t.record(w);
+  }
+  Snapshot s = w.report().snapshot();
+  t.decorate(s);
+  std::vector<const Outline*> trails;
+  for (const Outline& o : s.outlines)
+    if (o.label == TrailLog::kLabel) trails.push_back(&o);
+  ASSERT_EQ(trails.size(), 10u);  // the Sun and nine bodies, in id order
+  const double mercury = turns_of(*trails[1], 0.0, 0.0), pluto = turns_of(*trails[9], 0.0, 0.0);
+  std::printf("trail of Mercury: %.3f turns (%zu of %zu vertices), of Pluto: %.3f turns (%zu vertices)\n", mercury,
+              trails[1]->x.size(), t.points(1), pluto, trails[9]->x.size());
+  EXPECT_GT(mercury, 1.0);
+  EXPECT_LE(mercury, TrailLog::kTurns + 0.1);  // the centre of mass is within 0.01 AU of the origin
+  EXPECT_LT(trails[1]->x.size(), t.points(1) / 50);
+  EXPECT_GE(trails[9]->x.size(), t.points(9));  // every vertex (and the planet now, if it moved since)
+  EXPECT_LT(pluto, 0.1);
 }
 
 TEST(TrailLog, OnlyFewPointMassesAndRestartsWithTheRun) {

@@ -15,6 +15,7 @@
 #include "sph/params.h"
 #include "sph/particles.h"
 #include "sph/reference.h"
+#include "sph/view_inset.h"
 
 namespace sph {
 
@@ -115,6 +116,7 @@ struct SceneSpec {
   std::vector<RefAssumption> assumptions;
   ConvergenceDefaults convergence;  ///< empty key: scene.n over 60 ... 1920 if the scene has n
   UnitSystem units;                 ///< what the scene's numbers are in (code units unless set)
+  ViewInset inset;                  ///< 2D: a region drawn enlarged in a corner of the plane view (half 0: none)
 
   SceneValues default_values() const;
   /// Restricts a slot to these options.

@@ -7,6 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include "sph/view_inset.h"
+
 namespace sph {
 
 /// One scalar field per particle, with its range over the fluid particles.
@@ -64,6 +66,7 @@ struct Snapshot {
   std::string title, x_label;
   std::string y_label;  ///< a 2D plot's vertical axis label instead of "y" (the work-precision plot)
   std::string points_label, curve_label;  ///< the 1D legend's rows (empty: "SPH particles", "exact")
+  ViewInset inset;  ///< the scene's region for an enlarged inset of the plane view (SceneSpec::inset)
 
   /// The field with this name, or nullptr.
   const SnapshotField* find(std::string_view name) const {

@@ -116,6 +116,7 @@ Snapshot Report::snapshot() const {
   s.dt = in_.dt;
   s.count = n;
   if (in_.cfg.params.physics.fpm != FpmType::None) s.points_label = "FPM points (u = v_x)";
+  s.inset = in_.cfg.scene->inset;
   // entries in id order (in_.by_id): a particle keeps its place in every snapshot whatever the storage order
   s.x.resize(n); s.y.resize(n); s.z.resize(n); s.h.resize(n);
   for (std::size_t k = 0; k < n; ++k) {

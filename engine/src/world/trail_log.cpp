@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "sph/world.h"
 
@@ -18,6 +19,7 @@ void TrailLog::clear() {
   y_.clear();
   now_x_.clear();
   now_y_.clear();
+  m_.clear();
   scene_.clear();
   t_last_ = -std::numeric_limits<double>::infinity();
 }
@@ -37,6 +39,8 @@ void TrailLog::record(const World& w) {
     y_.assign(n, {});
     now_x_.assign(n, 0.f);
     now_y_.assign(n, 0.f);
+    m_.assign(n, 0.0);
+    for (std::size_t k = 0; k < n; ++k) m_[k] = p[Field::Mass][order[k]];
     scene_ = scene;
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
     for (std::size_t i = 0; i < n; ++i)
@@ -68,13 +72,43 @@ void TrailLog::record(const World& w) {
   }
 }
 
+namespace {
+
+/// The first of xs, ys to keep: the newest samples that turn at most `turns` revolutions about (cx, cy).
+std::size_t first_kept(const std::vector<float>& xs, const std::vector<float>& ys, double cx, double cy, double turns) {
+  double turned = 0.0;
+  std::size_t k = xs.size() - 1;
+  double last = std::atan2(ys[k] - cy, xs[k] - cx);
+  while (k > 0) {
+    const double a = std::atan2(ys[k - 1] - cy, xs[k - 1] - cx);
+    double d = a - last;  // unwrapped
+    if (d > std::numbers::pi) d -= 2.0 * std::numbers::pi;
+    if (d < -std::numbers::pi) d += 2.0 * std::numbers::pi;
+    turned += d;
+    if (std::abs(turned) > 2.0 * std::numbers::pi * turns) break;
+    last = a;
+    --k;
+  }
+  return k;
+}
+
+}  // namespace
+
 void TrailLog::decorate(Snapshot& s) const {
+  double mass = 0.0, cx = 0.0, cy = 0.0;  // the centre of mass now
+  for (std::size_t k = 0; k < m_.size() && k < now_x_.size(); ++k) {
+    mass += m_[k];
+    cx += m_[k] * now_x_[k];
+    cy += m_[k] * now_y_[k];
+  }
+  if (mass > 0.0) cx /= mass, cy /= mass;
   for (std::size_t k = 0; k < x_.size(); ++k) {
     if (x_[k].empty()) continue;
     Outline o;
     o.label = kLabel;
-    o.x = x_[k];
-    o.y = y_[k];
+    const auto first = static_cast<std::ptrdiff_t>(first_kept(x_[k], y_[k], cx, cy, kTurns));
+    o.x.assign(x_[k].begin() + first, x_[k].end());
+    o.y.assign(y_[k].begin() + first, y_[k].end());
     if (o.x.back() != now_x_[k] || o.y.back() != now_y_[k]) {  // up to where the particle is now
       o.x.push_back(now_x_[k]);
       o.y.push_back(now_y_[k]);
