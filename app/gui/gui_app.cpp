@@ -155,7 +155,7 @@ int run_gui(const GuiOptions& o) {
   while (!window->should_close())
     if (display_frame(loop)) break;
   report_exit(state, view, recorder, stats, engine_rate, applied, so.threads);
-  if (o.layout_report) report_layout(view);
+  if (o.layout_report) report_layout(view, state);
   return loop.rc;
 }
 

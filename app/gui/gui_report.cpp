@@ -77,7 +77,7 @@ void report_exit(GuiState& state, const ParticleView& view, const Recorder& reco
   report_lesson(state);
 }
 
-void report_layout(const ParticleView& view) {
+void report_layout(const ParticleView& view, const GuiState& state) {
   const ImDrawData* dd = ImGui::GetDrawData();
   if (dd == nullptr) return;
   const LayoutReport r = check_layout(*dd, *ImGui::GetIO().Fonts);
@@ -86,6 +86,8 @@ void report_layout(const ParticleView& view) {
   const render::TextLayoutReport v =
       render::check_text(view.texts(), static_cast<float>(frame.width), static_cast<float>(frame.height));
   std::printf("sph-gui: view text: %s\n", render::text_layout_text(v).c_str());
+  std::printf("sph-gui: Parameters header at y = %.0f while running, %.0f while stopped (-1: not seen)\n",
+              double(state.params_row.running), double(state.params_row.stopped));
 }
 
 }  // namespace sph::gui

@@ -12,7 +12,7 @@
 namespace sph::gui {
 
 /// The last frame's text that is clipped or overlaps other text (--layout-report; layout_check.h).
-void report_layout(const ParticleView& view);
+void report_layout(const ParticleView& view, const GuiState& state);
 
 /// The exit report on stdout; `applied` is the UI look in use, `threads` the engine's. Waits for the
 /// lesson step's check.

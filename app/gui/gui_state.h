@@ -99,6 +99,12 @@ class GuiState {
   void set_push(const Push& p) { stepper_.set_push(p); }
   PushDrag push;                   ///< the right-drag push: its settings and the drag in progress
   std::int64_t inspect_id = -1;    ///< as last sent (-1: the inspector is closed)
+  /// Where the Parameters header was drawn (its y in the controls' content [px]) while the run ran and
+  /// while it was stopped: the same when the rows above keep their place (a click meant for visc.beta
+  /// landed on visc.alpha when the scrub row went away at a stop); --layout-report prints both.
+  struct RowPlace {
+    float running = -1.f, stopped = -1.f;  ///< -1: not seen
+  } params_row;
   std::string compare_text = "kernel.type=M6";  ///< the compare panel's overrides, comma-separated
   std::string sweep_key = "kernel.eta", sweep_values = "1.0, 1.5";  ///< the sweep panel's key and values
   double real_time_factor = 0.0;   ///< as last sent (0 = as fast as possible)

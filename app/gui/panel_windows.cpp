@@ -25,7 +25,10 @@ void draw_panels(GuiState& s, const Layout& L, const FrameStats& stats) {
     if (ImGui::CollapsingHeader("Lesson", s.lesson.lesson ? ImGuiTreeNodeFlags_DefaultOpen : 0)) panel_lesson(s);
     if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) panel_scene(s);
     if (ImGui::CollapsingHeader("Run", ImGuiTreeNodeFlags_DefaultOpen)) panel_run(s);
-    if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) panel_params(s);
+    const bool params = ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen);
+    const float y = ImGui::GetItemRectMin().y - ImGui::GetWindowPos().y + ImGui::GetScrollY();
+    (s.frame() && s.frame()->running ? s.params_row.running : s.params_row.stopped) = y;
+    if (params) panel_params(s);
     if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) panel_display(s);
     if (ImGui::CollapsingHeader("Compare (A/B)")) panel_compare(s);
     if (ImGui::CollapsingHeader("Sweep (overlays)")) panel_sweep(s);

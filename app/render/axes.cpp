@@ -81,7 +81,9 @@ void add_axes(FrameBuild& f, const PixelRect& box, const AxesRanges& r, const Ax
   if (style.x_labels)
     f.text.add(style.x_title, box.x + 0.5f * box.w, box.bottom() + (kTick + 2 * kGap) * s + lh, s, f.pal.text,
                Align::Center);
-  f.text.add(style.y_title, box.x, box.y - lh - kGap * s, s, f.pal.text);
+  // a narrow panel's title (stacked panels at a projector's 3x text): smaller, then cut, never past the box
+  const int ts = f.text.fitting_scale(style.y_title, box.w, s);
+  f.text.add(f.text.elided(style.y_title, box.w, ts), box.x, box.y - lh - kGap * s, ts, f.pal.text);
 }
 
 }  // namespace sph::render

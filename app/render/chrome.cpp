@@ -64,9 +64,12 @@ void add_title(FrameBuild& f, const sph::Snapshot& snap, const ShownField& shown
     return;
   }
   const std::string scene = snap.scene.empty() ? "sph" : snap.scene;
-  const std::string title = scene + "  t = " + time_string(snap.t) + "  step " + std::to_string(snap.step);
+  std::string title = scene + "  t = " + time_string(snap.t) + "  step " + std::to_string(snap.step);
+  const float room = L.title.w - (shown.warning.empty() ? 0.f : f.text.measure(shown.warning, s) + f.text.line_height(s));
+  if (f.text.measure(title, s) > room) title = scene + "  t = " + time_string(snap.t);  // a projector's 3x text
+  const int ts = f.text.fitting_scale(title, room, s);
   float x = L.title.x;
-  x += f.text.add(title, x, L.title.y, s, f.pal.text);
+  x += f.text.add(f.text.elided(title, room, ts), x, L.title.y, ts, f.pal.text);
   const std::string count = "   N = " + std::to_string(snap.count) + "  (" + std::to_string(snap.dim) + "D)";
   if (x + f.text.measure(count, s) <= L.title.right())  // only where it fits (a projector's 3x text: not)
     x += f.text.add(count, x, L.title.y, s, f.pal.dim_text);

@@ -80,7 +80,7 @@ ProfilePanel residual_panel(const ProfilePanel& p, int axis) {
     for (std::size_t k = 1; k < p.runs.size(); ++k) {
       const sph::ExactCurve b = as_curve(p.runs[k], axis);
       r.runs.push_back(difference(p.runs[0], b, true, axis, p.runs[k].solid, largest));
-      r.runs.back().dot_scale = p.runs[k].dot_scale;
+      r.runs.back().dot_scale = std::pow(0.85f, static_cast<float>(k - 1));  // run B's full size: alone in the strip
       if (k == 1 && b.x.size() >= 2) x0 = b.x.front(), x1 = b.x.back();
     }
   } else {  // each run minus the exact curve

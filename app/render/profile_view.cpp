@@ -68,12 +68,24 @@ std::vector<PanelRun> panel_runs(const FrameScene& scene) {
 /// The runs' names once above a grid of panels, each in its colour ("A: ...   B: ..." or "key:  1.2 (A)
 /// 1.0  1.5"); `area` loses that line.
 void add_run_header(FrameBuild& f, const FrameScene& scene, const std::vector<PanelRun>& runs, PixelRect& area) {
-  const int s = f.layout.text_scale;
+  std::vector<std::pair<std::string, Rgba>> parts;
+  if (!scene.b) parts.emplace_back(scene.sweep_key + ":", f.pal.text);
+  for (const PanelRun& r : runs) parts.emplace_back(scene.b ? r.label : r.short_label, r.colour);
+  const float gap = scene.b ? 3.f : 1.5f;  // [line heights]
+  const auto width = [&](int s) {
+    float w = 0.f;
+    for (const auto& p : parts) w += f.text.measure(p.first, s) + gap * f.text.line_height(s);
+    return w;
+  };
+  int s = f.layout.text_scale;  // smaller where the line does not fit (a projector's 3x text)
+  while (s > 1 && width(s) > area.w) --s;
   const float lh = f.text.line_height(s);
   float x = area.x;
-  if (!scene.b) x += f.text.add(scene.sweep_key + ":", x, area.y, s, f.pal.text) + 1.5f * lh;
-  for (const PanelRun& r : runs)
-    x += f.text.add(scene.b ? r.label : r.short_label, x, area.y, s, r.colour) + (scene.b ? 3.f : 1.5f) * lh;
+  for (const auto& [text, colour] : parts) {
+    const std::string shown = f.text.elided(text, area.right() - x, s);
+    if (shown.empty()) break;
+    x += f.text.add(shown, x, area.y, s, colour) + gap * lh;
+  }
   area.y += lh + f.layout.margin;
   area.h -= lh + f.layout.margin;
 }

@@ -31,4 +31,15 @@ float TextBatch::add(std::string_view text, float x, float y_top, int scale, Rgb
   return width;
 }
 
+int TextBatch::fitting_scale(std::string_view text, float width, int scale) const {
+  while (scale > 1 && measure(text, scale) > width) --scale;
+  return std::max(scale, 1);
+}
+
+std::string TextBatch::elided(std::string text, float width, int scale) const {
+  if (measure(text, scale) <= width) return text;
+  while (!text.empty() && measure(text + "..", scale) > width) text.pop_back();
+  return text.empty() ? text : text + "..";
+}
+
 }  // namespace sph::render

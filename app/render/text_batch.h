@@ -37,6 +37,10 @@ class TextBatch {
   float add(std::string_view text, float x, float y_top, int scale, Rgba color, Align align = Align::Left);
   float measure(std::string_view text, int scale) const { return font_->measure(text) * static_cast<float>(scale); }
   float line_height(int scale) const { return font_->line_height() * static_cast<float>(scale); }
+  /// The largest scale in [1, scale] at which `text` is at most `width` wide (1 when none is).
+  int fitting_scale(std::string_view text, float width, int scale) const;
+  /// `text` cut with ".." to at most `width` at `scale` (whole when it fits).
+  std::string elided(std::string text, float width, int scale) const;
 
  private:
   const FontAtlas* font_;
