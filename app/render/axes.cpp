@@ -1,5 +1,7 @@
 #include "axes.h"
 
+#include <string>
+
 #include <algorithm>
 #include <cmath>
 
@@ -57,12 +59,17 @@ void add_axes(FrameBuild& f, const PixelRect& box, const AxesRanges& r, const Ax
   f.fill = box;  // a scissored clear: much cheaper than a blended quad on software GL
   const Ticks xt = nice_ticks(r.x0, r.x1, x_tick_target(box.w, s));
   const Ticks yt = nice_ticks(r.y0, r.y1, y_tick_target(box.h, s));
+  float last_right = -1e30f;  // a label that would touch the one before it is left out (a tiny box at 3x text)
   for (double x : xt.values) {
     const float X = crisp(px(x));
     if (style.grid) f.under.line(X, box.y, X, box.bottom(), 1.f, f.pal.grid);
     f.over.line(X, box.bottom(), X, box.bottom() + kTick * s, lw, f.pal.axis);
-    if (style.x_labels)
-      f.text.add(format_tick(x, xt.step), X, box.bottom() + (kTick + kGap) * s, s, f.pal.text, Align::Center);
+    const std::string label = format_tick(x, xt.step);
+    const float half = 0.5f * f.text.measure(label, s);
+    if (style.x_labels && X - half >= last_right + 0.5f * lh) {
+      f.text.add(label, X, box.bottom() + (kTick + kGap) * s, s, f.pal.text, Align::Center);
+      last_right = X + half;
+    }
   }
   // labels a line apart at least: in a box too short for that, only the label nearest its middle
   const float spacing = yt.values.size() > 1 ? box.h * static_cast<float>(yt.step / (r.y1 - r.y0)) : box.h;

@@ -162,9 +162,13 @@ void Renderer::compose(FrameBuild& f, const FrameScene& scene, const ViewSetting
   else
     compose_plane(f, snap, view, shown);
   if (!profile && !scene.sweep.empty()) {  // a sweep's runs have no place in a particle view: say where they are
-    const float lh = f.text.line_height(f.layout.text_scale);
-    f.text.add("sweep: its runs are drawn in the profile views", f.layout.plot.x + 0.5f * lh,
-               f.layout.plot.bottom() - 1.5f * lh, f.layout.text_scale, f.pal.dim_text);
+    const char* note = "sweep: its runs are drawn in the profile views";
+    const PixelRect& p = f.layout.plot;
+    const float room = p.w - f.text.line_height(1);
+    const int ns = f.text.fitting_scale(note, room, f.layout.text_scale);
+    const float lh = f.text.line_height(ns);
+    if (f.text.measure(note, ns) <= room && p.h > 4.f * lh)  // else the Sweep panel alone says so
+      f.text.add(note, p.x + 0.5f * f.text.line_height(1), p.bottom() - 1.5f * lh, ns, f.pal.dim_text);
   }
   add_colorbar(f, bar);
   add_title(f, snap, shown);

@@ -13,8 +13,8 @@
 #   push:  a right drag (--push-drag) pushes the gas along the drag;
 #   lesson: a step checked true and one false, a question and its answer, a pause, a sweep, a bad file;
 #           --sweep's errors;
-#   layout: sod (A/B), dam_break, evrard, the blow-up dialog, the help (F1), a sweep in two panels and
-#          solar_system (its inset) at 1280x720 and 1600x900,
+#   layout: sod (A/B), dam_break, evrard, the blow-up dialog, the help (F1), a sweep in two panels,
+#          solar_system (its inset) and a 2D sweep (gresho) at 1280x720 and 1600x900,
 #          UI scale 1, 1.5, 2 and 3: no text of the controls, status line, dialogs, plots or the particle
 #          view is cut or drawn over other text (--layout-report: layout_check.h, text_layout.h).
 file(REMOVE_RECURSE ${OUT})
@@ -315,7 +315,8 @@ if(MODE STREQUAL "layout")
   set(faults "")
   # the blow-up dialog: sod at a fixed dt far too long diverges at its first step
   foreach(scene "sod;--compare-set;kernel.type=M6" "dam_break" "evrard" "sod;--set;time.dt=0.05" "sod;--tap-keys;5:H"
-                "sod;--sweep;kernel.eta=1,1.5;--panels;rho,v" "solar_system")
+                "sod;--sweep;kernel.eta=1,1.5;--panels;rho,v" "solar_system"
+                "gresho;--set;scene.n_side=32;--sweep;visc.alpha=0.5")
     foreach(size 1280x720 1600x900)
       foreach(scale 1 1.5 2 3)
         execute_process(COMMAND ${XVFB_RUN} -a -s "-screen 0 ${size}x24" ${GUI} --scene ${scene} --size ${size}
