@@ -25,7 +25,8 @@ void run_row(const StepperFrame& f, std::size_t run, const std::string& label, c
   std::string err;
   if (k >= 0 && static_cast<std::size_t>(k) < values.size())
     err = "   " + f.ref_columns[static_cast<std::size_t>(k)].name + " " + value_text(values[static_cast<std::size_t>(k)], 4);
-  ImGui::TextColored(colour_of(run), "%s%s%s", label.c_str(), run == 0 ? " (A)" : "", err.c_str());
+  const std::string name = run == 0 ? render::mark_run_a(label) : label;
+  ImGui::TextColored(colour_of(run), "%s%s", name.c_str(), err.c_str());
 }
 
 }  // namespace
@@ -40,7 +41,7 @@ void panel_sweep(GuiState& s) {
   ImGui::SetNextItemWidth(-1.f);
   ImGui::InputText("##sweep_values", &s.sweep_values);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Its values, comma-separated: 1.0, 1.5. All runs restart from t = 0.");
-  const std::vector<std::string> values = split_values(s.sweep_values);
+  const std::vector<std::string> values = sweep_values(s.sweep_values);
   ImGui::BeginDisabled(values.empty() || s.sweep_key.empty());
   if (ImGui::Button(f->sweep.empty() ? "Sweep" : "Restart sweep")) s.set_sweep(s.sweep_key, values);
   ImGui::EndDisabled();

@@ -42,9 +42,7 @@ render::FrameScene view_scene(const StepperFrame& f) {
   }
   if (!f.sweep.empty()) {  // run A labelled with its own value of the key, each sweep run with its value
     scene.sweep_key = f.sweep_key;
-    const std::string a = compare_label(f.config, f.sweep.front().overrides);
-    scene.label_a = a + " (A)";
-    scene.value_a = a.substr(a.find('=') + 1);
+    render::name_sweep_run_a(scene, compare_label(f.config, f.sweep.front().overrides));
     scene.errors_a = errors_of(f.ref_columns, f.ref_values);
     for (const CompareFrame& r : f.sweep) {
       render::SweepRun run;

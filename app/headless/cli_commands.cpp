@@ -46,6 +46,9 @@ void add_compare_options(CLI::App* run, CommandLine& cl) {
   run->add_option("--compare-set", cl.run.compare.sets,
                   "A/B comparison: run B is run A (or --compare's scene) with key=value changed (repeatable), "
                   "e.g. --compare-set kernel.type=M6");
+  run->add_option("--sweep", cl.run.sweep,
+                  "a parameter sweep: run A beside one more run per value, KEY=V1,V2,... (at most 5), e.g. "
+                  "kernel.eta=1.0,1.5; every profile frame draws all runs; the summary lists each run's errors");
   run->add_flag("--csv-comments", cl.run.csv_comments, "keep the '#' comment lines in the CSV files (default: in csv_meta.json)");
   run->add_flag("--vtu", cl.run.vtu, "also write particles_NNNNN.vtu and particles.pvd (ParaView)");
   run->add_flag("--splash", cl.run.splash, "also write particles_NNNNN.dat (SPLASH: splash -ascii FILE)");

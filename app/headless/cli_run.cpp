@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "cli_common.h"
+#include "cli_sweep.h"
 #include "exit_codes.h"
 #include "run_checkpoint.h"
 #include "run_output.h"
@@ -42,7 +43,7 @@ sph::RunConfig resolve(const RunOptions& opt) {
 /// The scene, the checkpoint continued, the comparison and the output flags checked before the run starts:
 /// kOk, or the exit code after a message.
 int prepare_run(const RunOptions& opt, const ResumePoint* resume, RunConfig* cfg_out,
-                std::optional<CompareSetup>* compare) {
+                std::optional<CompareSetup>* compare, std::unique_ptr<SweepRuns>* sweep) {
   RunConfig& cfg = *cfg_out;
   try {
     cfg = resolve(opt);
@@ -62,8 +63,15 @@ int prepare_run(const RunOptions& opt, const ResumePoint* resume, RunConfig* cfg
     std::fprintf(stderr, "sph: %s\n", checkpoint_unsupported(opt).c_str());
     return kUsage;
   }
+  // a sweep's form here (exit 2), its values against the scene below (exit 3)
+  if (const std::string e = SweepRuns::usage_error(opt.sweep, !opt.compare.scene.empty() || !opt.compare.sets.empty());
+      !e.empty()) {
+    std::fprintf(stderr, "sph: --sweep: %s\n", e.c_str());
+    return kUsage;
+  }
   try {
     *compare = resolve_compare(opt.compare, cfg, opt.until);
+    *sweep = SweepRuns::resolve(opt.sweep, cfg, opt.until);
   } catch (const ConfigError& e) {
     std::fprintf(stderr, "sph: invalid scene: %s\n", e.what());
     return kInvalidScene;
@@ -152,20 +160,11 @@ int report_divergence(RunFiles& files, const World& world, const World* b, const
   return kDiverged;
 }
 
-/// kInaccurate after a message when a gravity scene's energy drifted beyond its bound (the warning names
-/// it), else kOk.
-int energy_code(const RunConfig& cfg, const World& world, const World* b) {
-  const bool a_bad = world.checks().energy_beyond_bound(cfg);
-  if (!a_bad && !(b && b->checks().energy_beyond_bound(b->config()))) return kOk;
-  std::fprintf(stderr, "sph: the energy drifted beyond the scene's bound%s (see the warnings): the result is not to "
-               "be trusted\n", !b ? "" : a_bad ? " (run A)" : " (run B)");
-  return kInaccurate;
-}
-
 /// The run once its worlds exist: the frames checked, the files opened, the steps to t_end with the files
 /// and frames falling due, the summary; the exit code (a stop signal's after its checkpoint).
 int run_worlds(const RunOptions& opt, const ResumePoint* resume, const RunConfig& cfg,
-               const std::optional<CompareSetup>& compare, World& world, World* b, Clock::time_point t0) {
+               const std::optional<CompareSetup>& compare, World& world, World* b, SweepRuns* sweep,
+               Clock::time_point t0) {
 #ifdef SPH_HAVE_FRAMES
   std::optional<RunFrames> frames;
   try {
@@ -184,7 +183,7 @@ int run_worlds(const RunOptions& opt, const ResumePoint* resume, const RunConfig
   open_files(opt, resume, cfg, world, b, files);
   const double t_end = cfg.params.time.t_end;
 #ifdef SPH_HAVE_FRAMES
-  if (frames->active() && !resume) frames->write(world, b, compare);  // a resumed sequence has its first frames
+  if (frames->active() && !resume) frames->write(world, b, compare, sweep);  // a resumed sequence has its first frames
   Progress progress(t_end);
 #endif
   const World* current = &world;  // the world a divergence comes from
@@ -199,10 +198,14 @@ int run_worlds(const RunOptions& opt, const ResumePoint* resume, const RunConfig
       if (frames->active()) frames->record_trails(world);
 #endif
       if (b) { current = b; advance_b(*b, world.time(), *compare); current = &world; }
+      if (sweep) {  // to A's time, and at an output time their energies checked as A's
+        sweep->advance_to(world.time(), current);
+        if (reached(world, files.next_out * files.dt_out) || world.time() >= t_end) sweep->check_output(current);
+      }
       write_step(files, world, b, t_end, current);
 #ifdef SPH_HAVE_FRAMES
       if (frames->active() && reached(world, frames->next_time())) {
-        frames->write(world, b, compare);
+        frames->write(world, b, compare, sweep);
         while (reached(world, frames->next_time())) frames->advance();
       }
       progress.update(world.time());
@@ -217,6 +220,7 @@ int run_worlds(const RunOptions& opt, const ResumePoint* resume, const RunConfig
       if (stop_signal() != 0) return report_stop(stop_signal(), world, opt, files.ck != nullptr);
     }
   } catch (const DivergedError& e) {
+    if (sweep) sweep->print_warnings();
     return report_divergence(files, world, b, *current, e);
   }
 #ifdef SPH_HAVE_FRAMES
@@ -226,12 +230,14 @@ int run_worlds(const RunOptions& opt, const ResumePoint* resume, const RunConfig
   if (files.out_b) { files.out_b->write_warnings(*b); files.out_b->finish(); }
   const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
   print_summary(opt, cfg, world, b, compare, wall);
+  if (sweep && !opt.quiet) sweep->print_summary();
   print_warnings(world);
   if (b) print_warnings(*b);
+  if (sweep) sweep->print_warnings();
 #ifdef SPH_HAVE_FRAMES
   if (const int rc = frames->finish(); rc != kOk) return rc;
 #endif
-  return energy_code(cfg, world, b);
+  return energy_code(cfg, world, b, sweep && sweep->energy_beyond_bound());
 }
 
 }  // namespace
@@ -261,7 +267,8 @@ int check_command(const RunOptions& opt) {
 int run_command(const RunOptions& opt, const ResumePoint* resume) {
   sph::RunConfig cfg;
   std::optional<CompareSetup> compare;
-  if (const int rc = prepare_run(opt, resume, &cfg, &compare); rc != kOk) return rc;
+  std::unique_ptr<SweepRuns> sweep;
+  if (const int rc = prepare_run(opt, resume, &cfg, &compare, &sweep); rc != kOk) return rc;
   if (opt.threads > 0) omp_set_num_threads(opt.threads);
   std::unique_ptr<World> world_ptr, b_ptr;  // outlive the try: a run that stops still reports its warnings
   try {
@@ -270,7 +277,8 @@ int run_command(const RunOptions& opt, const ResumePoint* resume) {
     world_ptr = std::make_unique<World>(cfg);
     if (resume) world_ptr->restore_state(resume->ck.world, "checkpoint " + resume->path);
     if (compare) b_ptr = std::make_unique<World>(compare->b);
-    return run_worlds(opt, resume, cfg, compare, *world_ptr, b_ptr.get(), t0);
+    if (sweep) sweep->build();
+    return run_worlds(opt, resume, cfg, compare, *world_ptr, b_ptr.get(), sweep.get(), t0);
   } catch (const DivergedError& e) {
     std::fprintf(stderr, "sph: %s; the state was not written\n", e.what());  // before the run's files
     if (world_ptr) print_warnings(*world_ptr);

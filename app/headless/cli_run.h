@@ -35,6 +35,7 @@ struct RunOptions {
   long long tree_probe = -1;       ///< frames draw the Barnes-Hut walk of this particle (-1: none)
   std::string panels;              ///< profiles: comma-separated fields, one panel each ("rho,v,p,u")
   CompareOptions compare;          ///< run B of an A/B comparison (--compare, --compare-set)
+  std::string sweep;               ///< --sweep KEY=V1,V2,...: run A beside one run per value (cli_sweep.h)
   double checkpoint_every = 0.0;   ///< --checkpoint-every: simulated time between checkpoints (0 = none)
 };
 

@@ -282,6 +282,7 @@ std::string checkpoint_unsupported(const RunOptions& opt) {
   if (opt.out.empty()) return "--checkpoint-every needs --out DIR (the checkpoint goes beside the CSVs)";
   if (!opt.compare.scene.empty() || !opt.compare.sets.empty())
     return "--checkpoint-every does not cover --compare runs";
+  if (!opt.sweep.empty()) return "--checkpoint-every does not cover --sweep runs";
   return "";
 }
 
@@ -295,7 +296,7 @@ int report_stop(int sig, const World& world, const RunOptions& opt, bool checkpo
   else if (opt.out.empty())  // e.g. a run that only writes frames: nothing about a flag it did not use
     std::fprintf(stderr, "sph: no checkpoint (a run with --out DIR writes one when it is stopped)\n");
   else
-    std::fprintf(stderr, "sph: no checkpoint (A/B runs with --compare are not checkpointed)\n");
+    std::fprintf(stderr, "sph: no checkpoint (runs with --compare or --sweep are not checkpointed)\n");
   return sig == SIGTERM ? kTerminated : kInterrupted;
 }
 

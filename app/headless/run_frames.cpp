@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "cli_common.h"
+#include "sph/compare.h"
 #include "exit_codes.h"
 #include "frame_size.h"
 #include "profile_axis.h"
@@ -128,7 +129,8 @@ RunFrames::RunFrames(const RunOptions& opt, const RunConfig& cfg, const World& w
                  flag::kProfileAxis);
 }
 
-void RunFrames::write(const World& world, const World* b, const std::optional<CompareSetup>& compare) {
+void RunFrames::write(const World& world, const World* b, const std::optional<CompareSetup>& compare,
+                      const SweepRuns* sweep) {
   snap_ = world.report().snapshot();  // with the probed particle's tree walk when asked for
   trails_.record(world);  // the first frame's start (a no-op when the step already recorded this time)
   trails_.decorate(snap_);
@@ -145,6 +147,17 @@ void RunFrames::write(const World& world, const World* b, const std::optional<Co
     scene.label_b = compare->label_b;
     scene.errors_a = reference_errors(world);
     scene.errors_b = reference_errors(*b);
+  }
+  if (sweep) {  // run A labelled with its own value of the key, each run with its value
+    scene.sweep_key = sweep->key();
+    render::name_sweep_run_a(scene, compare_label(world.config(), {sweep->key() + "=0"}));
+    scene.errors_a = reference_errors(world);
+    snap_sweep_.resize(sweep->size());
+    for (std::size_t k = 0; k < sweep->size(); ++k) {
+      snap_sweep_[k] = sweep->world(k).report().snapshot();
+      const std::string& l = sweep->label(k);
+      scene.sweep.push_back({&snap_sweep_[k], l, l.substr(l.find('=') + 1), reference_errors(sweep->world(k))});
+    }
   }
   if (!rec_->write_frame(scene, &err_)) throw IoError(err_);
 }

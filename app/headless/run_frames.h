@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cli_compare.h"
+#include "cli_sweep.h"
 #include "cli_run.h"
 #include "frame_recorder.h"
 #include "run_checkpoint.h"
@@ -32,8 +33,9 @@ class RunFrames {
   FrameResume resume_state();
   /// Samples the orbit trails of a few-body scene (after every step: sph/trail_log.h).
   void record_trails(const World& world) { trails_.record(world); }
-  /// Writes the frame of world now (with run B, compared); IoError when it cannot be written.
-  void write(const World& world, const World* b, const std::optional<CompareSetup>& compare);
+  /// Writes the frame of world now (with run B, compared, or a sweep's runs); IoError when it cannot be written.
+  void write(const World& world, const World* b, const std::optional<CompareSetup>& compare,
+             const SweepRuns* sweep = nullptr);
   /// Waits for the PNG files, prints where they are and makes the video (--video): kOk, or kIoError
   /// when the video cannot be made; IoError when a frame cannot be written.
   int finish();
@@ -44,6 +46,7 @@ class RunFrames {
   int next_frame_ = 1;
   std::string err_;
   Snapshot snap_, snap_b_;  // what the last frame showed
+  std::vector<Snapshot> snap_sweep_;
   TrailLog trails_;         // run A's orbit trails (a resumed run's start again at the resume)
 };
 

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "exit_codes.h"
 #include "sph/thread_wait.h"
 #include "summary_item.h"
 
@@ -38,6 +39,15 @@ void print_summary(const RunOptions& opt, const RunConfig& cfg, const World& wor
     std::printf("%s\n", line.c_str());
   }
   if (b) std::printf("%s\n", compare_summary(*b, *compare).c_str());
+}
+
+int energy_code(const RunConfig& cfg, const World& world, const World* b, bool sweep_beyond) {
+  const bool a_bad = world.checks().energy_beyond_bound(cfg);
+  const bool b_bad = b && b->checks().energy_beyond_bound(b->config());
+  if (!a_bad && !b_bad && !sweep_beyond) return kOk;
+  std::fprintf(stderr, "sph: the energy drifted beyond the scene's bound%s (see the warnings): the result is not to "
+               "be trusted\n", a_bad ? (b || sweep_beyond ? " (run A)" : "") : b_bad ? " (run B)" : " (a sweep run)");
+  return kInaccurate;
 }
 
 }  // namespace sph::cli

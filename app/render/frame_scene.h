@@ -52,11 +52,23 @@ struct FrameScene {
   /// Their reference values (column name, value): a profile's legend shows "L1_<field>" of each run.
   std::vector<std::pair<std::string, double>> errors_a, errors_b;
   /// A parameter sweep's other runs (none: no sweep); profiles draw them over run A in kRunColors[1..],
-  /// particle views show run A alone. Its key is sweep_key, run A's own value value_a.
+  /// particle views show run A alone. Its key is sweep_key; value_a is run A's value marked ("1.2 (A)").
   std::vector<SweepRun> sweep;
   std::string sweep_key, value_a;
   Highlight highlight;
 };
+
+/// `text` marked as run A's: "1.2 (A)", and "1.2 (default, A)" for a text that ends in a parenthesis.
+inline std::string mark_run_a(const std::string& text) {
+  if (!text.empty() && text.back() == ')') return text.substr(0, text.size() - 1) + ", A)";
+  return text + " (A)";
+}
+
+/// Names run A of a sweep by its "key=value" label (compare_label's): label_a and value_a, both marked.
+inline void name_sweep_run_a(FrameScene& scene, const std::string& label) {
+  scene.label_a = mark_run_a(label);
+  scene.value_a = mark_run_a(label.substr(label.find('=') + 1));
+}
 
 /// What a pixel shows (Renderer::pick): a particle of run 0 (A), 1 (B) or kFirstSweepRun + k (a sweep's
 /// run k), by snapshot index.

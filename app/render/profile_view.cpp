@@ -54,7 +54,7 @@ std::vector<PanelRun> panel_runs(const FrameScene& scene) {
     out.push_back({scene.a, 0, scene.label_a, "A", &scene.errors_a, kRunColors[0], 1.f});
     out.push_back({scene.b, 1, scene.label_b, "B", &scene.errors_b, kRunColors[1], 0.55f});
   } else if (!scene.sweep.empty()) {
-    out.push_back({scene.a, 0, scene.label_a, scene.value_a + " (A)", &scene.errors_a, kRunColors[0], 1.f});
+    out.push_back({scene.a, 0, scene.label_a, scene.value_a, &scene.errors_a, kRunColors[0], 1.f});
     float dot = 0.55f;
     for (std::size_t k = 0; k < scene.sweep.size(); ++k, dot *= 0.85f) {
       const SweepRun& r = scene.sweep[k];

@@ -1,6 +1,6 @@
 // A/B comparisons' configurations (engine/src/params/compare.cpp): run B is A with its overrides, a bad
 // override is refused naming it, labels give each run's value of the overridden keys, and the
-// differences of two configurations are listed key by key.
+// differences of two configurations are listed key by key; a sweep typed as KEY=V1,V2 is a key and its values.
 #include <gtest/gtest.h>
 
 #include "sph/compare.h"
@@ -28,6 +28,19 @@ TEST(Compare, LabelsAndDifferences) {
   EXPECT_EQ(compare_label(b, o), "kernel.type=M6, scene.n_left=800");
   EXPECT_EQ(differences(a, b), o);
   EXPECT_TRUE(differences(a, a).empty());
+}
+
+TEST(Compare, ASweepIsAKeyAndItsValues) {
+  std::string key, err;
+  std::vector<std::string> values;
+  ASSERT_TRUE(split_sweep("kernel.eta=1.0, 1.5;2", &key, &values, &err));
+  EXPECT_EQ(key, "kernel.eta");
+  EXPECT_EQ(values, (std::vector<std::string>{"1.0", "1.5", "2"}));
+  EXPECT_EQ(sweep_values(" 1.0 1.5,\n2 "), (std::vector<std::string>{"1.0", "1.5", "2"}));
+  for (const char* bad : {"kernel.eta", "kernel.eta=", "=1,2", "kernel.eta= , "}) {
+    EXPECT_FALSE(split_sweep(bad, &key, &values, &err)) << bad;
+    EXPECT_NE(err.find("is not KEY=V1,V2"), std::string::npos) << err;
+  }
 }
 
 }  // namespace

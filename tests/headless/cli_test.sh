@@ -236,7 +236,21 @@ ok "compare with a file: label" grep -q "^run B: visc.alpha=0.5, scene.n_left=40
 bad compare_other_scene 3 "same scene" run sod --compare lax
 bad compare_bad_key 3 "nope" run sod --compare-set nope=1
 bad compare_not_kv 3 "key=value" run sod --compare-set M6
+# a parameter sweep: each run stepped to A's times with its errors in the summary; A's files as without it
+"$sph" run sod --set scene.n_left=100 --sweep kernel.eta=1,1.5 --out "$work/sw" > "$work/sw.log"
+check "sweep" 0 $?
+ok "sweep: each run's L1 in the summary" grep -q "^sweep run kernel.eta=1.5: t = 0.2 after [0-9]* steps .*L1_rho = " "$work/sw.log"
+ok "sweep: one line a run" test "$(grep -c '^sweep run' "$work/sw.log")" = 2
+ok "sweep: A's files as without it" cmp -s "$work/sw/particles_00004.csv" "$work/sod/particles_00004.csv"
+bad sweep_not_kv 2 "KEY=V1,V2" run sod --sweep kernel.eta
+bad sweep_six 2 "at most 5" run sod --sweep kernel.eta=1,1.1,1.2,1.3,1.4,1.5
+bad sweep_bad_value 3 "kernel.eta = 9" run sod --sweep kernel.eta=1,9
+bad sweep_and_compare 2 "not with --compare" run sod --sweep kernel.eta=1 --compare-set visc.alpha=0
 if "$sph" run --help | grep -q -- "--frames"; then
+  env -u DISPLAY "$sph" run sod --set scene.n_left=100 --sweep kernel.eta=1,1.5 --frames "$work/swfr" --every 0.2 \
+    --panels rho,v --size 640x480 > /dev/null
+  check "sweep frames with panels" 0 $?
+  ok "sweep frames" test "$(png_size "$work/swfr/frame_00001.png")" = "640x480"
   env -u DISPLAY "$sph" run sod --set scene.n_left=100 --compare-set visc.alpha=0 --frames "$work/abfr" --every 0.2 \
     --panels rho,v,p,u --size 640x480 > /dev/null
   check "compare frames with panels" 0 $?

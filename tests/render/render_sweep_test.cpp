@@ -27,7 +27,7 @@ FrameScene sweep_of(const Snapshot& a, const Snapshot& b, const Snapshot& c) {
   scene.a = &a;
   scene.sweep_key = "kernel.eta";
   scene.label_a = "kernel.eta=1.2 (A)";
-  scene.value_a = "1.2";
+  scene.value_a = "1.2 (A)";
   scene.errors_a = {{"L1_rho", 0.003}};
   scene.sweep.push_back({&b, "kernel.eta=1", "1", {{"L1_rho", 0.0027}}});
   scene.sweep.push_back({&c, "kernel.eta=1.5", "1.5", {{"L1_rho", 0.0036}}});

@@ -16,6 +16,12 @@ RunConfig fork_config(const RunConfig& a, const std::vector<std::string>& overri
 /// A's label, B's for run B's); a key cfg does not know is left out.
 std::string compare_label(const RunConfig& cfg, const std::vector<std::string>& overrides);
 
+/// A sweep's values typed as text: split at commas, semicolons, spaces, tabs and newlines, empty items dropped.
+std::vector<std::string> sweep_values(const std::string& text);
+
+/// "KEY=V1,V2,..." (as --sweep takes it): false (with *err saying what is wrong) without a key, an '=' or a value.
+bool split_sweep(const std::string& text, std::string* key, std::vector<std::string>* values, std::string* err);
+
 /// The keys in which b differs from a: every run parameter of the param table (physics slots included)
 /// and every scene value, as key=value with b's values, in table order.
 std::vector<std::string> differences(const RunConfig& a, const RunConfig& b);

@@ -54,6 +54,31 @@ std::string compare_label(const RunConfig& cfg, const std::vector<std::string>& 
   return out;
 }
 
+std::vector<std::string> sweep_values(const std::string& text) {
+  std::vector<std::string> out;
+  std::string cur;
+  for (const char c : text + ",") {
+    if (c == ',' || c == ';' || c == ' ' || c == '\t' || c == '\n') {
+      if (!cur.empty()) out.push_back(cur);
+      cur.clear();
+    } else {
+      cur += c;
+    }
+  }
+  return out;
+}
+
+bool split_sweep(const std::string& text, std::string* key, std::vector<std::string>* values, std::string* err) {
+  const auto eq = text.find('=');
+  *key = eq == std::string::npos ? std::string() : text.substr(0, eq);
+  *values = eq == std::string::npos ? std::vector<std::string>{} : sweep_values(text.substr(eq + 1));
+  if (key->empty() || values->empty()) {
+    *err = "'" + text + "' is not KEY=V1,V2,... (e.g. kernel.eta=1.0,1.5)";
+    return false;
+  }
+  return true;
+}
+
 std::vector<std::string> differences(const RunConfig& a, const RunConfig& b) {
   std::vector<std::string> out;
   for (const ParamInfo& info : param_table()) {

@@ -47,8 +47,8 @@ TEST(ViewScene, ASweepLabelsEachRunWithItsValue) {
   const render::FrameScene s = view_scene(f);
   EXPECT_EQ(s.b, nullptr);
   EXPECT_EQ(s.sweep_key, "kernel.eta");
-  EXPECT_EQ(s.label_a, "kernel.eta=1.2 (default) (A)");
-  EXPECT_EQ(s.value_a, "1.2 (default)");
+  EXPECT_EQ(s.label_a, "kernel.eta=1.2 (default, A)");
+  EXPECT_EQ(s.value_a, "1.2 (default, A)");
   ASSERT_EQ(s.sweep.size(), 2u);
   EXPECT_EQ(s.sweep[0].snap, &f.sweep[0].snapshot);
   EXPECT_EQ(s.sweep[0].label, "kernel.eta=1");
