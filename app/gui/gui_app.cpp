@@ -63,8 +63,7 @@ int check_sweep(const GuiOptions& o, const RunConfig& cfg) {
   if (o.sweep.empty()) return kOk;
   std::string key, err;
   std::vector<std::string> values;
-  if (!split_sweep(o.sweep, &key, &values, &err) || values.size() > 5) {
-    if (err.empty()) err = std::to_string(values.size()) + " values given, at most 5";
+  if (!split_sweep(o.sweep, &key, &values, &err)) {
     std::fprintf(stderr, "sph-gui: --sweep: %s\n", err.c_str());
     return kUsage;
   }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "frame_scene.h"
 #include "lesson_editor.h"
 #include "panels.h"
 #include "sph/lesson_check.h"
@@ -69,7 +70,7 @@ void lesson_editor(GuiState& s) {
       LessonStep& st = L.recorded.steps.back();
       st.sweep_key = f->sweep_key;
       for (const CompareFrame& r : f->sweep)
-        if (!r.overrides.empty()) st.sweep_values.push_back(r.overrides.front().substr(r.overrides.front().find('=') + 1));
+        if (!r.overrides.empty()) st.sweep_values.push_back(render::value_of_label(r.overrides.front()));
     }
     L.editor_message = "step " + std::to_string(L.recorded.steps.size()) + " recorded at t = " + lesson_number(f->snapshot.t);
   }

@@ -44,14 +44,8 @@ render::FrameScene view_scene(const StepperFrame& f) {
     scene.sweep_key = f.sweep_key;
     render::name_sweep_run_a(scene, compare_label(f.config, f.sweep.front().overrides));
     scene.errors_a = errors_of(f.ref_columns, f.ref_values);
-    for (const CompareFrame& r : f.sweep) {
-      render::SweepRun run;
-      run.snap = &r.snapshot;
-      run.label = compare_label(r.config, r.overrides);
-      run.value = run.label.substr(run.label.find('=') + 1);
-      run.errors = errors_of(f.ref_columns, r.ref_values);
-      scene.sweep.push_back(std::move(run));
-    }
+    for (const CompareFrame& r : f.sweep)
+      render::add_sweep_run(scene, &r.snapshot, compare_label(r.config, r.overrides), errors_of(f.ref_columns, r.ref_values));
   }
   if (f.inspection) scene.highlight = highlight_of(*f.inspection);
   return scene;

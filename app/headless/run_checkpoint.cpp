@@ -274,15 +274,10 @@ void Checkpointer::write(const World& world, RunOutput& out, int next_out, const
   if (!err.empty()) throw IoError(err);
 }
 
-}  // namespace sph::cli
-
-namespace sph::cli {
-
 std::string checkpoint_unsupported(const RunOptions& opt) {
   if (opt.out.empty()) return "--checkpoint-every needs --out DIR (the checkpoint goes beside the CSVs)";
-  if (!opt.compare.scene.empty() || !opt.compare.sets.empty())
-    return "--checkpoint-every does not cover --compare runs";
-  if (!opt.sweep.empty()) return "--checkpoint-every does not cover --sweep runs";
+  if (!opt.compare.scene.empty() || !opt.compare.sets.empty() || !opt.sweep.empty())
+    return std::string("--checkpoint-every does not cover ") + (opt.sweep.empty() ? "--compare" : "--sweep") + " runs";
   return "";
 }
 

@@ -155,8 +155,7 @@ void RunFrames::write(const World& world, const World* b, const std::optional<Co
     snap_sweep_.resize(sweep->size());
     for (std::size_t k = 0; k < sweep->size(); ++k) {
       snap_sweep_[k] = sweep->world(k).report().snapshot();
-      const std::string& l = sweep->label(k);
-      scene.sweep.push_back({&snap_sweep_[k], l, l.substr(l.find('=') + 1), reference_errors(sweep->world(k))});
+      render::add_sweep_run(scene, &snap_sweep_[k], sweep->label(k), reference_errors(sweep->world(k)));
     }
   }
   if (!rec_->write_frame(scene, &err_)) throw IoError(err_);

@@ -64,10 +64,19 @@ inline std::string mark_run_a(const std::string& text) {
   return text + " (A)";
 }
 
+/// The value of a "key=value" label ("1.5" of "kernel.eta=1.5").
+inline std::string value_of_label(const std::string& label) { return label.substr(label.find('=') + 1); }
+
 /// Names run A of a sweep by its "key=value" label (compare_label's): label_a and value_a, both marked.
 inline void name_sweep_run_a(FrameScene& scene, const std::string& label) {
   scene.label_a = mark_run_a(label);
-  scene.value_a = mark_run_a(label.substr(label.find('=') + 1));
+  scene.value_a = mark_run_a(value_of_label(label));
+}
+
+/// Adds a sweep's run, named by its "key=value" label, with its reference values.
+inline void add_sweep_run(FrameScene& scene, const sph::Snapshot* snap, const std::string& label,
+                          std::vector<std::pair<std::string, double>> errors) {
+  scene.sweep.push_back({snap, label, value_of_label(label), std::move(errors)});
 }
 
 /// What a pixel shows (Renderer::pick): a particle of run 0 (A), 1 (B) or kFirstSweepRun + k (a sweep's

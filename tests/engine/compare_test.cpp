@@ -41,6 +41,8 @@ TEST(Compare, ASweepIsAKeyAndItsValues) {
     EXPECT_FALSE(split_sweep(bad, &key, &values, &err)) << bad;
     EXPECT_NE(err.find("is not KEY=V1,V2"), std::string::npos) << err;
   }
+  EXPECT_FALSE(split_sweep("kernel.eta=1,1.1,1.2,1.3,1.4,1.5", &key, &values, &err));
+  EXPECT_EQ(err, "6 values of kernel.eta, at most 5");
 }
 
 }  // namespace

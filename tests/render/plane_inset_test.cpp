@@ -49,8 +49,8 @@ TEST_F(PlaneInset, TheRegionEnlargedInTheCornerWithItsParticles) {
   const int drawn = count_colour(rgba, kWidth, c, dot, 6);
   EXPECT_GT(drawn, 40) << "two dots of radius 4 px in the inset";
   // the dots are where the inset's mapping puts them: particle 0 (0.1, 0) right of particle 1 (-0.1, 0.1)
-  // by half the inset's side, which is 0.32 of the plot's smaller side (40x, far from the 1 px they are
-  // apart in the view itself)
+  // by half the inset's side, which is 0.32 of the plot's smaller side (about 6 times the 0.2 / 8 of the
+  // plot they are apart in the view itself)
   const float side = std::round(0.32f * std::min(layout().plot.w, layout().plot.h));
   float sx[2] = {0.f, 0.f}, n[2] = {0.f, 0.f};
   for (int y = static_cast<int>(c.y); y < static_cast<int>(c.bottom()); ++y)

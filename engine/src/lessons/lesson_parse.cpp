@@ -6,6 +6,7 @@
 
 #include "lesson_json.h"
 #include "lesson_metric.h"
+#include "sph/compare.h"
 #include "sph/lesson.h"
 #include "sph/lesson_check.h"
 #include "text/json_error_text.h"
@@ -106,8 +107,8 @@ void sweep_of(const json& s, LessonStep& st, const std::string& origin, const st
   if (!w.is_object()) fail(origin, p + "sweep", "must be an object {\"key\": ..., \"values\": [...]}");
   only_keys(w, {"key", "values"}, origin, p + "sweep");
   st.sweep_key = text_of(w, "key", true, origin, p + "sweep.");
-  if (!w.contains("values") || !w["values"].is_array() || w["values"].empty() || w["values"].size() > 5)
-    fail(origin, p + "sweep.values", "must be a list of 1 to 5 values");
+  if (!w.contains("values") || !w["values"].is_array() || w["values"].empty() || w["values"].size() > kMaxSweepRuns)
+    fail(origin, p + "sweep.values", "must be a list of 1 to " + std::to_string(kMaxSweepRuns) + " values");
   for (const json& v : w["values"]) {
     if (v.is_number()) st.sweep_values.push_back(exact_text(v.get<double>()));
     else if (v.is_string()) st.sweep_values.push_back(v.get<std::string>());

@@ -76,6 +76,10 @@ bool split_sweep(const std::string& text, std::string* key, std::vector<std::str
     *err = "'" + text + "' is not KEY=V1,V2,... (e.g. kernel.eta=1.0,1.5)";
     return false;
   }
+  if (values->size() > kMaxSweepRuns) {
+    *err = std::to_string(values->size()) + " values of " + *key + ", at most " + std::to_string(kMaxSweepRuns);
+    return false;
+  }
   return true;
 }
 

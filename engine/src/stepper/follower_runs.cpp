@@ -16,9 +16,9 @@ bool FollowerRuns::start_compare(const RunConfig& a, const std::vector<std::stri
 bool FollowerRuns::start_sweep(const RunConfig& a, const std::string& key, const std::vector<std::string>& values,
                                std::string* err) {
   stop();
-  if (values.empty() || values.size() > kMaxSweep) {
+  if (values.empty() || values.size() > kMaxSweepRuns) {
     *err = "sweep: " + std::to_string(values.size()) + " values of " + key + " given; it takes 1 to " +
-           std::to_string(kMaxSweep) + " besides run A's own";
+           std::to_string(kMaxSweepRuns) + " besides run A's own";
     return false;
   }
   runs_.resize(values.size());

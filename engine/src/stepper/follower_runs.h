@@ -14,9 +14,6 @@ namespace sph::detail {
 class FollowerRuns {
  public:
   enum class Kind { None, Compare, Sweep };
-  /// The most runs a sweep may add to run A (the profile plots have this many run colours).
-  static constexpr std::size_t kMaxSweep = 5;
-
   Kind kind() const { return kind_; }
   bool on() const { return kind_ != Kind::None; }
   std::size_t size() const { return runs_.size(); }
