@@ -45,6 +45,7 @@ class EngineLoop {
   void save_state(const std::string& path);  // a checkpoint of world_ (engine_state.cpp)
   void check_loaded_state();             // a restored state that holds a divergence is shown diverged
   void step();                           // one World::step with its bookkeeping
+  bool follow();                         // the follower runs to A's time; false: stopping, publish nothing
   void start_recording(double every);
   void start_compare(const std::vector<std::string>& overrides);  // A and B from t = 0; empty: stop
   void start_sweep(const std::string& key, const std::vector<std::string>& values);  // A and the sweep from t = 0

@@ -37,25 +37,7 @@ void EngineLoop::step() {
     error_ = std::string("step failed: ") + e.what();
     diverged_ = true;
   }
-  // Run B to the same time. A B whose dt collapses crawled on inside this call, deaf to every command, and
-  // the program could not quit (the soak test hung in ~Stepper on one): a stop interrupts it, and a B that
-  // needs longer than the budget for one step of A ends the comparison, saying so. Other commands wait
-  // for B, so that every frame shows both runs at one time.
-  if (!diverged_ && followers_.on()) {
-    const auto until = Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                                          std::chrono::duration<double>(options_.compare_budget));
-    const auto enough = [&] { return inbox_.stop_requested() || Clock::now() > until; };
-    std::size_t behind = 0;
-    switch (followers_.advance_to(world_->time(), &error_, enough, &behind)) {
-      case CompareRun::Advance::Done: break;
-      case CompareRun::Advance::Failed: diverged_ = true; break;
-      case CompareRun::Advance::Behind:
-        if (inbox_.stop_requested()) return;  // stopping: nothing more is published
-        error_ = followers_.run(behind).too_slow(world_->time(), options_.compare_budget);
-        followers_.stop();  // A goes on alone
-        break;
-    }
-  }
+  if (!diverged_ && followers_.on() && !follow()) return;
   if (diverged_) {
     running_ = false;
     single_steps_ = 0;
@@ -93,6 +75,27 @@ void EngineLoop::step() {
   } else if (force || (since >= options_.publish_interval && (!out_.unread() || since >= kStaleAfter))) {
     publish();
   }
+}
+
+bool EngineLoop::follow() {
+  // Run B (or a sweep's runs) to A's time. A B whose dt collapses crawled on inside this call, deaf to
+  // every command, and the program could not quit (the soak test hung in ~Stepper on one): a stop
+  // interrupts it, and a B that needs longer than the budget for one step of A ends the comparison,
+  // saying so. Other commands wait for B, so that every frame shows both runs at one time.
+  const auto until = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                        std::chrono::duration<double>(options_.compare_budget));
+  const auto enough = [&] { return inbox_.stop_requested() || Clock::now() > until; };
+  std::size_t behind = 0;
+  switch (followers_.advance_to(world_->time(), &error_, enough, &behind)) {
+    case CompareRun::Advance::Done: break;
+    case CompareRun::Advance::Failed: diverged_ = true; break;
+    case CompareRun::Advance::Behind:
+      if (inbox_.stop_requested()) return false;  // stopping: nothing more is published
+      error_ = followers_.run(behind).too_slow(world_->time(), options_.compare_budget);
+      followers_.stop();  // A goes on alone
+      break;
+  }
+  return true;
 }
 
 void EngineLoop::start_recording(double every) {
