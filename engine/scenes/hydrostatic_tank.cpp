@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "liquid_tank.h"
-#include "reference/hydrostatic_reference.h"
 #include "scene_registration.h"
 #include "scene_util.h"
 
@@ -14,21 +13,13 @@ SPH_SCENE(110, hydrostatic_tank_scene) {
   SceneSpec s = liquid_scene(
       "hydrostatic_tank",
       "water at rest in a 1 m tank under gravity; pressure against rho0 g (H - y)", {"dummy", "lennard_jones"});
-  s.params = {{"width", 1.0, 0.01, 100.0, false, "tank width [m]", "m"},
-              {"depth", 1.0, 0.01, 100.0, false, "water depth H [m]", "m"},
-              spacing_param(0.025)};
-  Params& d = s.defaults;
-  d = tank_params(1.0, 0.1);
-  set_run_times(d, 1.0, 0.1);
+  hydrostatic_tank_head(s, 1.0, 0.025, 1.0, "tank width [m]");
   s.build = [](const Params& prm, const SceneValues& v) {
     const double W = v.at("width"), H = v.at("depth"), dx = v.at("dx");
     SceneSetup out = tank_setup(prm, W, H, W, 1.2 * H, dx);
     out.domain.lo = {-0.1 * W, -0.1 * H, 0.0};
     out.domain.hi = {1.1 * W, 1.2 * H, 1.0};
     return out;
-  };
-  s.reference = [](const Params& prm, const SceneValues& v) {
-    return make_hydrostatic_reference(v.at("depth"), v.at("width"), v.at("dx"), prm.liquid.rho0, -prm.body.gy);
   };
   s.error_bounds = {{"L1_p_rel", 0.013}};  // measured to t = 1: 8.5e-3 (the start-up oscillation at t = 0.2)
   s.assumptions = {resolution("scene.dx", 1e-4, 0.025), weakly_compressible("depth", 1.0)};

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <utility>
 
+#include "reference/hydrostatic_reference.h"
 #include "scene_util.h"
 #include "sph/eos.h"
 #include "sph/kernel.h"
@@ -117,6 +118,17 @@ SceneSetup tank_setup(const Params& prm, double W, double H, double L, double to
   add_fluid_block(lay, 0.0, W, 0.0, H, dx);
   add_tank_walls(lay, L, top, dx, prm.physics.walls, dummy_layers(prm, 2));
   return liquid_setup(prm, lay, dx, H);
+}
+
+void hydrostatic_tank_head(SceneSpec& s, double size, double dx, double t_end, const char* width_help) {
+  s.params = {{"width", size, 0.01, 100.0, false, width_help, "m"},
+              {"depth", size, 0.01, 100.0, false, "water depth H [m]", "m"},
+              spacing_param(dx)};
+  s.defaults = tank_params(size, 0.1);
+  set_run_times(s.defaults, t_end, 0.1 * t_end);
+  s.reference = [](const Params& prm, const SceneValues& v) {
+    return make_hydrostatic_reference(v.at("depth"), v.at("width"), v.at("dx"), prm.liquid.rho0, -prm.body.gy);
+  };
 }
 
 SceneSpec liquid_scene(std::string name, std::string description, std::vector<std::string> walls) {

@@ -68,6 +68,11 @@ inline double lj_strength(double g, double H) { return 5.0 * g * H; }
 /// g [m/s^2] of the tank scenes (tank_params' body force, the wall strength).
 inline constexpr double kTankGravity = 9.81;
 
+/// The values, defaults and reference of a tank of water at rest (hydrostatic_tank, hydrostatic_tank_3d):
+/// scene values width, depth (both `size` by default) and dx; tank_params(size, 0.1) run to t_end with an
+/// output every t_end / 10; P against rho0 g (H - y) (reference/hydrostatic_reference.h).
+void hydrostatic_tank_head(SceneSpec& s, double size, double dx, double t_end, const char* width_help);
+
 /// The scene parameter "dx", the lattice spacing of fluid and walls [m] (default dx).
 inline SceneParam spacing_param(double dx) { return {"dx", dx, 1e-4, 1.0, false, "particle spacing [m]", "m"}; }
 
