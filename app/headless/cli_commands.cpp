@@ -73,6 +73,8 @@ void add_frame_options(CLI::App* run, CommandLine& cl) {
                 "comparison always has one: B - A in 1D)");
   run->add_flag("--high-contrast", cl.run.high_contrast,
                 "frames with white-on-black axes, labels and legends (as sph-gui --high-contrast, for a projector)");
+  run->add_flag("--hide-walls", cl.run.hide_walls,
+                "2D and 3D frames without the wall particles (a 3D tank's walls hide its water; the GUI's 'show walls')");
   run->add_option("--cut", cl.run.cut, "3D scenes: a cutaway, only the particles with AXIS <= VALUE drawn, e.g. z=0");
   run->add_option("--profile-axis", cl.run.profile_axis,
                   "2D scenes: plot the field against x or y (with its reference curve) instead of the plane; off");

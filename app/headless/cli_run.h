@@ -27,6 +27,7 @@ struct RunOptions {
   bool linear = false;              ///< --linear: no automatic log10 colour scale
   bool residuals = false;           ///< --residuals: profiles with a strip of the error against the exact curve
   bool high_contrast = false;       ///< --high-contrast: white-on-black axes, labels and legends (a projector)
+  bool hide_walls = false;          ///< --hide-walls: 2D and 3D frames without the wall particles
   std::string cut;                  ///< --cut AXIS=VALUE: 3D cutaway (e.g. z=0), empty: none
   std::string profile_axis = "off";  ///< 2D scenes: "x" or "y" plots the field against that coordinate
   std::string video;

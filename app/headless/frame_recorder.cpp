@@ -31,6 +31,7 @@ FrameRecorder::FrameRecorder(const FrameOptions& options, std::unique_ptr<Offscr
   view_.auto_log = options.auto_log;
   view_.residuals = options.residuals;
   view_.high_contrast = options.high_contrast;
+  view_.show_walls = !options.hide_walls;
   view_.cut_axis = options.cut_axis;
   view_.cut_at = options.cut_at;
   view_.profile_axis = render::parse_profile_axis(options.profile_axis).value_or(-1);

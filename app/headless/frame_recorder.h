@@ -46,6 +46,7 @@ struct FrameOptions {
   bool auto_log = true;       ///< log10 when a field spans more than two decades (off: --linear)
   bool residuals = false;     ///< profiles: the strip of the error against the exact curve (--residuals)
   bool high_contrast = false; ///< white-on-black chrome (--high-contrast)
+  bool hide_walls = false;    ///< no wall particles in 2D and 3D frames (--hide-walls)
   int cut_axis = -1;          ///< 3D cutaway (--cut): only particles with coordinate cut_axis <= cut_at
   float cut_at = 0.f;
   std::string profile_axis = "off";  ///< 2D: "x" or "y" (profile of the field against it), or "off"

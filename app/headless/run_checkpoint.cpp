@@ -61,6 +61,7 @@ std::string options_json(const RunOptions& opt) {
     f["linear"] = opt.linear;
     f["residuals"] = opt.residuals;
     f["high_contrast"] = opt.high_contrast;
+    f["hide_walls"] = opt.hide_walls;
     f["cut"] = opt.cut;
     f["profile_axis"] = opt.profile_axis;
     f["panels"] = opt.panels;
@@ -123,6 +124,7 @@ RunOptions options_from_json(const std::string& text, const std::string& path) {
       o.linear = f.value("linear", false);  // checkpoints written before --linear existed
       o.residuals = f.value("residuals", false);
       o.high_contrast = f.value("high_contrast", false);  // checkpoints written before --high-contrast existed
+      o.hide_walls = f.value("hide_walls", false);
       o.cut = f.value("cut", std::string());
       o.profile_axis = f.at("profile_axis").get<std::string>();
       o.panels = f.at("panels").get<std::string>();

@@ -60,6 +60,7 @@ std::unique_ptr<FrameRecorder> make_recorder(const RunOptions& opt) {
   fo.auto_log = !opt.linear;
   fo.residuals = opt.residuals;
   fo.high_contrast = opt.high_contrast;
+  fo.hide_walls = opt.hide_walls;
   if (!opt.cut.empty() && !parse_cut(opt.cut, &fo.cut_axis, &fo.cut_at))
     throw ConfigError("--cut " + opt.cut + ": expected AXIS=VALUE with AXIS x, y or z, e.g. z=0");
   fo.profile_axis = opt.profile_axis;

@@ -13,7 +13,7 @@ SPH_SCENE(110, hydrostatic_tank_scene) {
   SceneSpec s = liquid_scene(
       "hydrostatic_tank",
       "water at rest in a 1 m tank under gravity; pressure against rho0 g (H - y)", {"dummy", "lennard_jones"});
-  hydrostatic_tank_head(s, 1.0, 0.025, 1.0, "tank width [m]");
+  hydrostatic_tank_head(s, 1.0, 0.025, 1.0, "tank width [m]", 1);
   s.build = [](const Params& prm, const SceneValues& v) {
     const double W = v.at("width"), H = v.at("depth"), dx = v.at("dx");
     SceneSetup out = tank_setup(prm, W, H, W, 1.2 * H, dx);

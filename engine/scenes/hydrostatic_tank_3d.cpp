@@ -1,5 +1,5 @@
-// Water at rest in a square 3D tank under gravity (along -y, as in 2D): it should stay at rest with
-// P = rho0 g (H - y). The 2D tank's physics in three dimensions: hydrostatic start (Tait EOS inverted),
+// Water at rest in a square 3D tank under gravity along -z (the 3D views' up): it should stay at rest
+// with P = rho0 g (H - z). The 2D tank's physics in three dimensions: hydrostatic start (Tait EOS inverted),
 // dummy walls (Adami et al. 2012) in `layers` lattice rows under the floor and outside the four sides,
 // standard-corrected forces (seed 001 eqs. 53-55) with delta-SPH density diffusion.
 #include <algorithm>
@@ -13,30 +13,30 @@
 namespace sph::scenes {
 namespace {
 
-/// Fluid of depth H filling [0, W]^2 in x and z, then the dummy walls around it up to `top`, on a cubic
+/// Fluid of depth H filling [0, W]^2 in x and y, then the dummy walls around it up to `top`, on a cubic
 /// lattice of spacing dx (fluid centres dx/2 inside the faces).
 Particles tank_3d(const Params& prm, double W, double H, double top, double dx) {
   const double T = dummy_layers(prm, 3) * dx;
   std::vector<Vec3> fluid, walls;
   const auto count = [&](double len) { return static_cast<long>(std::floor(len / dx + 1e-9)); };
-  for (long j = 0; j < count(H); ++j)
-    for (long k = 0; k < count(W); ++k)
+  for (long k = 0; k < count(H); ++k)
+    for (long j = 0; j < count(W); ++j)
       for (long i = 0; i < count(W); ++i) fluid.push_back({(i + 0.5) * dx, (j + 0.5) * dx, (k + 0.5) * dx});
-  for (long j = 0; j < count(top + T); ++j)
-    for (long k = 0; k < count(W + 2 * T); ++k)
+  for (long k = 0; k < count(top + T); ++k)
+    for (long j = 0; j < count(W + 2 * T); ++j)
       for (long i = 0; i < count(W + 2 * T); ++i) {
         const Vec3 x{-T + (i + 0.5) * dx, -T + (j + 0.5) * dx, -T + (k + 0.5) * dx};
-        if (x.x > 0.0 && x.x < W && x.z > 0.0 && x.z < W && x.y > 0.0) continue;  // inside the tank
+        if (x.x > 0.0 && x.x < W && x.y > 0.0 && x.y < W && x.z > 0.0) continue;  // inside the tank
         walls.push_back(x);
       }
   Particles p = make_particles(prm, 3, fluid.size() + walls.size());
   const LiquidParams& l = prm.liquid;
-  const double g = -prm.body.gy, h = effective_eta(prm, 3) * dx, vol = dx * dx * dx;
+  const double g = -prm.body.gz, h = effective_eta(prm, 3) * dx, vol = dx * dx * dx;
   for (std::size_t n = 0; n < fluid.size() + walls.size(); ++n) {
     const bool wall = n >= fluid.size();
     const Vec3 x = wall ? walls[n - fluid.size()] : fluid[n];
     for (int a = 0; a < 3; ++a) p.x[a][n] = a == 0 ? x.x : a == 1 ? x.y : x.z;
-    const double rho = wall ? l.rho0 : eos::tait_density(l.rho0 * g * std::max(0.0, H - x.y) + l.p0, l);
+    const double rho = wall ? l.rho0 : eos::tait_density(l.rho0 * g * std::max(0.0, H - x.z) + l.p0, l);
     p[Field::Mass][n] = rho * vol;
     p[Field::H][n] = h;
     if (p.has(Field::Density)) p[Field::Density][n] = rho;
@@ -49,16 +49,16 @@ Particles tank_3d(const Params& prm, double W, double H, double top, double dx) 
 
 SPH_SCENE(111, hydrostatic_tank_3d_scene) {
   SceneSpec s = scene_head("hydrostatic_tank_3d", "free-surface liquids (seed 001)",
-                           "water at rest in a square 3D tank under gravity; pressure against rho0 g (H - y)", 3,
+                           "water at rest in a square 3D tank under gravity along -z; pressure against rho0 g (H - z)", 3,
                            UnitSystem::si());
   s.allow(Slot::Eos, {"tait"});
   s.allow(Slot::Walls, {"dummy"});
-  hydrostatic_tank_head(s, 0.5, 0.05, 0.5, "tank width and length [m]");
+  hydrostatic_tank_head(s, 0.5, 0.05, 0.5, "tank width and length [m]", 2);
   s.build = [](const Params& prm, const SceneValues& v) {
     const double W = v.at("width"), H = v.at("depth"), dx = v.at("dx");
     SceneSetup out{tank_3d(prm, W, H, 1.2 * H, dx), {}, dx, lj_strength(kTankGravity, H)};
-    out.domain.lo = {-0.2 * W, -0.2 * H, -0.2 * W};
-    out.domain.hi = {1.2 * W, 1.3 * H, 1.2 * W};
+    out.domain.lo = {-0.2 * W, -0.2 * W, -0.2 * H};
+    out.domain.hi = {1.2 * W, 1.2 * W, 1.3 * H};
     return out;
   };
   s.error_bounds = {{"L1_p_rel", 0.015}};  // measured to t = 0.5: 0.0102 (the start-up wave at t = 0.1)

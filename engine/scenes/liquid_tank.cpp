@@ -120,14 +120,16 @@ SceneSetup tank_setup(const Params& prm, double W, double H, double L, double to
   return liquid_setup(prm, lay, dx, H);
 }
 
-void hydrostatic_tank_head(SceneSpec& s, double size, double dx, double t_end, const char* width_help) {
+void hydrostatic_tank_head(SceneSpec& s, double size, double dx, double t_end, const char* width_help, int up) {
   s.params = {{"width", size, 0.01, 100.0, false, width_help, "m"},
               {"depth", size, 0.01, 100.0, false, "water depth H [m]", "m"},
               spacing_param(dx)};
   s.defaults = tank_params(size, 0.1);
+  if (up == 2) std::swap(s.defaults.body.gy, s.defaults.body.gz);
   set_run_times(s.defaults, t_end, 0.1 * t_end);
-  s.reference = [](const Params& prm, const SceneValues& v) {
-    return make_hydrostatic_reference(v.at("depth"), v.at("width"), v.at("dx"), prm.liquid.rho0, -prm.body.gy);
+  s.reference = [up](const Params& prm, const SceneValues& v) {
+    const double g = -(up == 2 ? prm.body.gz : prm.body.gy);
+    return make_hydrostatic_reference(v.at("depth"), v.at("width"), v.at("dx"), prm.liquid.rho0, g, up);
   };
 }
 

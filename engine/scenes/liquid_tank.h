@@ -59,7 +59,8 @@ inline RefAssumption weakly_compressible(std::string key, double factor) {
   return {"c0 / sqrt(2 g H)", 10.0 * (1.0 - 1e-9), 1e300,
           "the reference is incompressible: c0 >= 10 times the fall speed sqrt(2 g H) keeps density changes near 1%",
           [key, factor](const Params& p, const SceneValues& v) {
-            return p.liquid.c0 / std::sqrt(2.0 * std::abs(p.body.gy) * factor * v.at(key));
+            const double g = std::sqrt(p.body.gx * p.body.gx + p.body.gy * p.body.gy + p.body.gz * p.body.gz);
+            return p.liquid.c0 / std::sqrt(2.0 * g * factor * v.at(key));
           }};
 }
 
@@ -69,9 +70,10 @@ inline double lj_strength(double g, double H) { return 5.0 * g * H; }
 inline constexpr double kTankGravity = 9.81;
 
 /// The values, defaults and reference of a tank of water at rest (hydrostatic_tank, hydrostatic_tank_3d):
-/// scene values width, depth (both `size` by default) and dx; tank_params(size, 0.1) run to t_end with an
-/// output every t_end / 10; P against rho0 g (H - y) (reference/hydrostatic_reference.h).
-void hydrostatic_tank_head(SceneSpec& s, double size, double dx, double t_end, const char* width_help);
+/// scene values width, depth (both `size` by default) and dx; tank_params(size, 0.1) with gravity along
+/// -y (up = 1) or -z (up = 2), run to t_end with an output every t_end / 10; P against rho0 g (H - y)
+/// along the vertical axis (reference/hydrostatic_reference.h).
+void hydrostatic_tank_head(SceneSpec& s, double size, double dx, double t_end, const char* width_help, int up);
 
 /// The scene parameter "dx", the lattice spacing of fluid and walls [m] (default dx).
 inline SceneParam spacing_param(double dx) { return {"dx", dx, 1e-4, 1.0, false, "particle spacing [m]", "m"}; }

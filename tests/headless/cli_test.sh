@@ -284,6 +284,15 @@ ok "export-ics bad format: nothing written" test ! -e "$work/x.hdf5"
 "$sph" export-ics burgers_upwind --out "$work/b.hdf5" 2> "$work/exb.err"; check "export-ics of an FPM scene" 3 $?
 ok "export-ics of an FPM scene: nothing written" test ! -e "$work/b.hdf5"
 
+# --hide-walls: the 3D tank's water, otherwise hidden behind its walls, drawn without them
+for w in shown hidden; do
+  flag=""; [ "$w" = hidden ] && flag="--hide-walls"
+  "$sph" run hydrostatic_tank_3d --until 0.001 --frames "$work/walls_$w" --every 1 --size 640x360 $flag --quiet \
+    > /dev/null 2>&1; check "frames, walls $w" 0 $?
+done
+read -r worst differ < <(python3 "$root/tests/headless/png_pixels.py" --diff "$work/walls_shown/frame_00000.png" "$work/walls_hidden/frame_00000.png")
+ok "--hide-walls changes a tenth of the 3D tank's frame at least ($differ pixels differ)" test "$differ" -gt 23040
+
 # the EGL backend draws the frames a machine without OSMesa would (Mesa 25.1 removed OSMesa)
 if "$sph" run --help | grep -q -- "--gl"; then
   for gl in osmesa egl; do

@@ -12,8 +12,8 @@ namespace {
 
 class HydrostaticReference final : public Reference {
  public:
-  HydrostaticReference(double H, double W, double dx, double rho0, double g)
-      : H_(H), W_(W), dx_(dx), rho0_(rho0), g_(g) {}
+  HydrostaticReference(double H, double W, double dx, double rho0, double g, int up)
+      : H_(H), W_(W), dx_(dx), rho0_(rho0), g_(g), up_(up) {}
 
   std::vector<RefColumn> columns() const override {
     std::vector<RefColumn> c =
@@ -28,7 +28,7 @@ class HydrostaticReference final : public Reference {
     double mid = 0.0, l1 = 0.0;
     std::size_t n_mid = 0;
     for (std::size_t i = 0; i < p.fluid(); ++i) {
-      const double x = p.x[0][i], y = p.x[1][i];
+      const double x = p.x[0][i], y = p.x[static_cast<std::size_t>(up_)][i];
       l1 += std::abs(P[i] - rho0_ * g_ * (H_ - y));
       if (std::abs(y - 0.5 * H_) < dx_ && x > 3 * dx_ && x < W_ - 3 * dx_) {
         mid += P[i];
@@ -48,7 +48,7 @@ class HydrostaticReference final : public Reference {
   std::vector<std::pair<int, int>> series() const override { return {{0, 1}}; }
 
   ReferenceCurves curves(const Domain&, double) const override {
-    ExactCurve c{"p", {}, {}, 1};
+    ExactCurve c{"p", {}, {}, up_};
     for (int k = 0; k <= 50; ++k) {
       const double y = H_ * k / 50.0;
       c.x.push_back(static_cast<float>(y));
@@ -61,12 +61,13 @@ class HydrostaticReference final : public Reference {
 
  private:
   double H_, W_, dx_, rho0_, g_;
+  int up_;
 };
 
 }  // namespace
 
-std::unique_ptr<Reference> make_hydrostatic_reference(double H, double W, double dx, double rho0, double g) {
-  return std::make_unique<HydrostaticReference>(H, W, dx, rho0, g);
+std::unique_ptr<Reference> make_hydrostatic_reference(double H, double W, double dx, double rho0, double g, int up) {
+  return std::make_unique<HydrostaticReference>(H, W, dx, rho0, g, up);
 }
 
 }  // namespace sph::scenes
