@@ -1,9 +1,10 @@
-// Mid-depth pressure (mean over the fluid particles within dx of y = H/2 and more than 3 dx from the
-// side walls) and the L1 error of P over all fluid particles, relative to the bottom pressure rho0 g H;
-// the exact line P(y) for profile plots.
+// Mid-depth pressure (mean over the fluid particles within dx of y = H/2, y the vertical axis, and more
+// than 3 dx from the side walls x = 0 and x = W) and the L1 error of P over all fluid particles,
+// relative to the bottom pressure rho0 g H; the exact line P(y) for profile plots.
 #include "hydrostatic_reference.h"
 
 #include <cmath>
+#include <string>
 
 #include "reference/compared_columns.h"
 
@@ -42,7 +43,8 @@ class HydrostaticReference final : public Reference {
   }
 
   std::string description() const override {
-    return "hydrostatic tank: P against rho0 g (H - y); p_mid = mean P of the particles within dx of mid-depth";
+    const std::string up = up_ == 2 ? "z" : "y";
+    return "hydrostatic tank: P against rho0 g (H - " + up + "); p_mid = mean P of the particles within dx of mid-depth";
   }
   int primary() const override { return 2; }
   std::vector<std::pair<int, int>> series() const override { return {{0, 1}}; }
