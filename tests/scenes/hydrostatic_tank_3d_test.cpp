@@ -19,7 +19,7 @@ TEST(HydrostaticTank3d, MidDepthPressureWithinTwoPercentAndTheWaterAtRest) {
   const double err = w.report().reference_value("err_mid"), l1 = w.report().reference_value("L1_p_rel");
   const double v_max = w.report().diagnostics().v_max;
   std::printf("3D tank, t = 0.2: |p_mid/exact - 1| = %.4f, L1(P)/(rho0 g H) = %.4f, v_max = %.3g m/s\n", err, l1, v_max);
-  EXPECT_LT(err, 0.02);    // measured 0.21%
+  EXPECT_LT(err, 0.02);    // measured 0.27%
   EXPECT_LT(l1, 0.01);     // measured 0.41%
   EXPECT_LT(v_max, 0.05);  // the free-fall speed sqrt(2 g H) is 3.1 m/s; measured 0.031 (0.015 at t = 0.5)
   // no particle left the tank or went through a wall

@@ -1,5 +1,5 @@
 // Mid-depth pressure (mean over the fluid particles within dx of y = H/2, y the vertical axis, and more
-// than 3 dx from the side walls x = 0 and x = W) and the L1 error of P over all fluid particles,
+// than 3 dx from the side walls x = 0 and x = W, and in 3D y = 0 and y = W) and the L1 error of P over all fluid particles,
 // relative to the bottom pressure rho0 g H; the exact line P(y) for profile plots.
 #include "hydrostatic_reference.h"
 
@@ -30,8 +30,9 @@ class HydrostaticReference final : public Reference {
     std::size_t n_mid = 0;
     for (std::size_t i = 0; i < p.fluid(); ++i) {
       const double x = p.x[0][i], y = p.x[static_cast<std::size_t>(up_)][i];
+      const double x2 = up_ == 2 ? p.x[1][i] : 0.5 * W_;  // 3D: the second horizontal axis (the tank is square)
       l1 += std::abs(P[i] - rho0_ * g_ * (H_ - y));
-      if (std::abs(y - 0.5 * H_) < dx_ && x > 3 * dx_ && x < W_ - 3 * dx_) {
+      if (std::abs(y - 0.5 * H_) < dx_ && x > 3 * dx_ && x < W_ - 3 * dx_ && x2 > 3 * dx_ && x2 < W_ - 3 * dx_) {
         mid += P[i];
         ++n_mid;
       }
