@@ -35,7 +35,9 @@ Particles tank_3d(const Params& prm, double W, double H, double top, double dx) 
   for (std::size_t n = 0; n < fluid.size() + walls.size(); ++n) {
     const bool wall = n >= fluid.size();
     const Vec3 x = wall ? walls[n - fluid.size()] : fluid[n];
-    for (int a = 0; a < 3; ++a) p.x[a][n] = a == 0 ? x.x : a == 1 ? x.y : x.z;
+    p.x[0][n] = x.x;
+    p.x[1][n] = x.y;
+    p.x[2][n] = x.z;
     const double rho = wall ? l.rho0 : eos::tait_density(l.rho0 * g * std::max(0.0, H - x.z) + l.p0, l);
     p[Field::Mass][n] = rho * vol;
     p[Field::H][n] = h;

@@ -22,13 +22,15 @@ TEST(HydrostaticTank3d, MidDepthPressureWithinTwoPercentAndTheWaterAtRest) {
   EXPECT_LT(err, 0.02);    // measured 0.27%
   EXPECT_LT(l1, 0.01);     // measured 0.41%
   EXPECT_LT(v_max, 0.05);  // the free-fall speed sqrt(2 g H) is 3.1 m/s; measured 0.031 (0.015 at t = 0.5)
-  // no particle left the tank or went through a wall
+  // no particle went through a side wall or the floor (the walls' inner faces are x, y = 0 and 0.5, z = 0)
   const Particles& p = w.particles();
-  for (std::size_t i = 0; i < p.fluid(); ++i)
+  for (std::size_t i = 0; i < p.fluid(); ++i) {
     for (int a : {0, 1}) {
       ASSERT_GT(p.x[a][i], 0.0) << "fluid particle " << i << " outside a side wall";
       ASSERT_LT(p.x[a][i], 0.5) << "fluid particle " << i << " outside a side wall";
     }
+    ASSERT_GT(p.x[2][i], 0.0) << "fluid particle " << i << " below the floor";
+  }
 }
 
 }  // namespace
