@@ -21,6 +21,10 @@ void add_run_options(CLI::App* check, CLI::App* run, CommandLine& cl) {
   run->add_option("--out", cl.run.out, "output directory: scene.json, diagnostics.csv, particles_*.csv, errors.csv, csv_meta.json");
   run->add_option("--threads", cl.run.threads, "OpenMP threads")->check(CLI::Range(1, 1024));
   run->add_flag("--quiet", cl.run.quiet, "no summary line");
+  run->add_option("--probe-every", cl.run.probe_every,
+                  "simulated time between the rows of errors.csv (the reference's probes and errors), instead of one "
+                  "row per particle output: a fine time series without the particle files (needs --out)")
+      ->check(finite_from(0.0, true));
   run->add_option("--checkpoint-every", cl.run.checkpoint_every,
                   "simulated time between checkpoints OUT/checkpoint.sph (needs --out; `sph resume OUT` continues "
                   "the run bitwise as if it had not stopped)")

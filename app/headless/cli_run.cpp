@@ -19,7 +19,6 @@
 #include "sph/config.h"
 #include "sph/ic_export.h"
 #include "sph/memory_budget.h"
-#include "sph/seed_documents.h"
 #include "sph/world.h"
 #ifdef SPH_HAVE_FRAMES
 #include "progress.h"
@@ -76,9 +75,13 @@ int prepare_run(const RunOptions& opt, const ResumePoint* resume, RunConfig* cfg
     std::fprintf(stderr, "sph: invalid scene: %s\n", e.what());
     return kInvalidScene;
   }
-  if ((opt.vtu || opt.splash || opt.hdf5) && opt.out.empty()) {
+  if ((opt.vtu || opt.splash || opt.hdf5 || opt.probe_every > 0.0) && opt.out.empty()) {
     std::fprintf(stderr, "sph: %s needs --out DIR (the files go beside the CSVs)\n",
-                 opt.vtu ? "--vtu" : opt.splash ? "--splash" : "--hdf5");
+                 opt.vtu ? "--vtu" : opt.splash ? "--splash" : opt.hdf5 ? "--hdf5" : "--probe-every");
+    return kUsage;
+  }
+  if (opt.probe_every > 0.0 && !cfg.scene->reference) {
+    std::fprintf(stderr, "sph: --probe-every: scene %s has no reference (no errors.csv to write)\n", cfg.scene->name.c_str());
     return kUsage;
   }
   if (opt.hdf5 && !hdf5_unsupported(cfg.params).empty()) {
@@ -105,14 +108,16 @@ bool reached(const World& world, double t) { return world.time() >= t * (1.0 - 1
 struct RunFiles {
   std::unique_ptr<RunOutput> out, out_b;
   std::unique_ptr<Checkpointer> ck;  // also for the checkpoint a signal asks for (run_signals.h)
-  double dt_out = 0.0;
+  double dt_out = 0.0, dt_probe = 0.0;  // dt_probe: --probe-every (0: errors.csv rows with the particles)
   int next_out = 1;
+  long next_probe = 1;
+  double next_due() const { return dt_probe > 0.0 ? std::min(next_out * dt_out, next_probe * dt_probe) : next_out * dt_out; }
 };
 
 /// Opens the run's files and writes the state at the start (a resumed run's files go on where they were).
 void open_files(const RunOptions& opt, const ResumePoint* resume, const RunConfig& cfg, const World& world,
                 const World* b, RunFiles& files) {
-  OutputOptions formats{opt.csv_comments, opt.vtu, opt.splash, opt.hdf5};
+  OutputOptions formats{opt.csv_comments, opt.vtu, opt.splash, opt.hdf5, opt.probe_every > 0.0};
   if (!opt.out.empty())
     files.out = resume ? std::make_unique<RunOutput>(opt.out, world, formats, resume->output)
                        : std::make_unique<RunOutput>(opt.out, world, formats);
@@ -121,7 +126,10 @@ void open_files(const RunOptions& opt, const ResumePoint* resume, const RunConfi
   const double t_end = cfg.params.time.t_end;
   files.dt_out = cfg.params.time.dt_out > 0.0 ? cfg.params.time.dt_out : t_end;
   files.next_out = resume ? resume->next_out : 1;
+  files.dt_probe = opt.probe_every;  // a resumed run's next probe follows from its time
+  if (files.dt_probe > 0.0) files.next_probe = static_cast<long>(std::floor(world.time() / files.dt_probe * (1.0 + 1e-12))) + 1;
   if (files.out && !resume) { files.out->write_diagnostics(world); files.out->write_particles(world); }
+  if (files.out && !resume && files.dt_probe > 0.0) files.out->write_errors(world);
   if (files.out_b) { files.out_b->write_diagnostics(*b); files.out_b->write_particles(*b); }
 }
 
@@ -139,6 +147,10 @@ void write_step(RunFiles& files, World& world, World* b, double t_end, const Wor
     if (files.out) files.out->write_particles(world);
     if (files.out_b) files.out_b->write_particles(*b);
     while (reached(world, files.next_out * files.dt_out)) ++files.next_out;
+  }
+  if (files.dt_probe > 0.0 && (reached(world, files.next_probe * files.dt_probe) || world.time() >= t_end)) {
+    if (files.out) files.out->write_errors(world);
+    while (reached(world, files.next_probe * files.dt_probe)) ++files.next_probe;
   }
 }
 
@@ -189,7 +201,7 @@ int run_worlds(const RunOptions& opt, const ResumePoint* resume, const RunConfig
   const World* current = &world;  // the world a divergence comes from
   try {
     while (world.time() < t_end) {
-      double target = std::min(t_end, files.next_out * files.dt_out);
+      double target = std::min(t_end, files.next_due());
 #ifdef SPH_HAVE_FRAMES
       if (frames->active()) target = std::min(target, frames->next_time());
 #endif
@@ -241,17 +253,6 @@ int run_worlds(const RunOptions& opt, const ResumePoint* resume, const RunConfig
 }
 
 }  // namespace
-
-int list_command() {
-  std::string text;
-  for (const auto& s : scene_registry()) {
-    char head[40];
-    std::snprintf(head, sizeof head, "%-24s %dD  ", s.name.c_str(), s.dim);
-    text += head + s.description + "\n";
-  }
-  std::fputs(with_seed_citations(text).c_str(), stdout);
-  return kOk;
-}
 
 int check_command(const RunOptions& opt) {
   try {

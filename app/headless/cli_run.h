@@ -37,6 +37,7 @@ struct RunOptions {
   std::string panels;              ///< profiles: comma-separated fields, one panel each ("rho,v,p,u")
   CompareOptions compare;          ///< run B of an A/B comparison (--compare, --compare-set)
   std::string sweep;               ///< --sweep KEY=V1,V2,...: run A beside one run per value (cli_sweep.h)
+  double probe_every = 0.0;        ///< --probe-every: errors.csv rows at this interval of simulated time (0 = at each output)
   double checkpoint_every = 0.0;   ///< --checkpoint-every: simulated time between checkpoints (0 = none)
 };
 

@@ -130,11 +130,7 @@ void RunOutput::write_particles(const World& world) {
   ++files_;
   series_.push_back({world.time(), stem});
   steps_.push_back(world.steps());
-  if (world.report().has_reference()) {
-    check(errors_.append(
-        errors_csv_row(world.time(), world.report().reference_values(), world.time() <= valid_until_ * (1.0 + 1e-12)) + "\n"));
-    check(errors_.flush());
-  }
+  if (!options_.probe_rows) write_errors(world);
   if (options_.vtu) {
     put(base + ".vtu", vtu_file(world));
     std::vector<PvdEntry> entries = series_;
@@ -177,6 +173,13 @@ void RunOutput::write_warnings(const World& world, const DivergedError* stop) {
       << "\n";
   if (stop) f << "diverged," << stop->step << "," << stop->t << "," << stop->particle << ",1," << csv_quoted(stop->what()) << "\n";
   put("warnings.csv", f.str());
+}
+
+void RunOutput::write_errors(const World& world) {
+  if (!world.report().has_reference()) return;
+  check(errors_.append(
+      errors_csv_row(world.time(), world.report().reference_values(), world.time() <= valid_until_ * (1.0 + 1e-12)) + "\n"));
+  check(errors_.flush());
 }
 
 }  // namespace sph::cli

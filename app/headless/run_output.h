@@ -26,6 +26,7 @@ struct OutputOptions {
   bool vtu = false;           ///< --vtu: particles_NNNNN.vtu and the particles.pvd series
   bool splash = false;        ///< --splash: particles_NNNNN.dat for SPLASH's ascii reader
   bool hdf5 = false;          ///< --hdf5: particles_NNNNN.hdf5 in the SWIFT layout
+  bool probe_rows = false;    ///< --probe-every: errors.csv rows come from write_errors, not with the particles
 };
 
 /// Where a run's output stood at a checkpoint: enough to continue its files as if it had not stopped.
@@ -58,6 +59,8 @@ class RunOutput {
   void write_diagnostics(const World& world);  ///< one row of diagnostics.csv
   /// The next particles_NNNNN.csv (+ a row of errors.csv), and the formats asked for.
   void write_particles(const World& world);
+  /// One row of errors.csv now (a run with a reference; nothing otherwise).
+  void write_errors(const World& world);
   /// warnings.csv: what the run tolerated (kind, first step and time, particle id, checks, message); a
   /// header only for a clean run. A run stopped by a divergence ends it with a row of kind "diverged"
   /// (its step, time, particle and message), so its folder records why its files end early.

@@ -2,13 +2,11 @@
 // with P = rho0 g (H - z). The 2D tank's physics in three dimensions: hydrostatic start (Tait EOS inverted),
 // dummy walls (Adami et al. 2012) in `layers` lattice rows under the floor and outside the four sides,
 // standard-corrected forces (seed 001 eqs. 53-55) with delta-SPH density diffusion.
-#include <algorithm>
 #include <cmath>
 
 #include "liquid_tank.h"
 #include "scene_registration.h"
 #include "scene_util.h"
-#include "sph/eos.h"
 
 namespace sph::scenes {
 namespace {
@@ -17,34 +15,19 @@ namespace {
 /// lattice of spacing dx (fluid centres dx/2 inside the faces).
 Particles tank_3d(const Params& prm, double W, double H, double top, double dx) {
   const double T = dummy_layers(prm, 3) * dx;
-  std::vector<Vec3> fluid, walls;
+  LiquidLayout lay;
   const auto count = [&](double len) { return static_cast<long>(std::floor(len / dx + 1e-9)); };
   for (long k = 0; k < count(H); ++k)
     for (long j = 0; j < count(W); ++j)
-      for (long i = 0; i < count(W); ++i) fluid.push_back({(i + 0.5) * dx, (j + 0.5) * dx, (k + 0.5) * dx});
+      for (long i = 0; i < count(W); ++i) lay.fluid.push_back({(i + 0.5) * dx, (j + 0.5) * dx, (k + 0.5) * dx});
   for (long k = 0; k < count(top + T); ++k)
     for (long j = 0; j < count(W + 2 * T); ++j)
       for (long i = 0; i < count(W + 2 * T); ++i) {
         const Vec3 x{-T + (i + 0.5) * dx, -T + (j + 0.5) * dx, -T + (k + 0.5) * dx};
         if (x.x > 0.0 && x.x < W && x.y > 0.0 && x.y < W && x.z > 0.0) continue;  // inside the tank
-        walls.push_back(x);
+        lay.walls.push_back(x);
       }
-  Particles p = make_particles(prm, 3, fluid.size() + walls.size());
-  const LiquidParams& l = prm.liquid;
-  const double g = -prm.body.gz, h = effective_eta(prm, 3) * dx, vol = dx * dx * dx;
-  for (std::size_t n = 0; n < fluid.size() + walls.size(); ++n) {
-    const bool wall = n >= fluid.size();
-    const Vec3 x = wall ? walls[n - fluid.size()] : fluid[n];
-    p.x[0][n] = x.x;
-    p.x[1][n] = x.y;
-    p.x[2][n] = x.z;
-    const double rho = wall ? l.rho0 : eos::tait_density(l.rho0 * g * std::max(0.0, H - x.z) + l.p0, l);
-    p[Field::Mass][n] = rho * vol;
-    p[Field::H][n] = h;
-    if (p.has(Field::Density)) p[Field::Density][n] = rho;
-    p.kind[n] = static_cast<std::uint8_t>(wall ? Kind::Wall : Kind::Fluid);
-  }
-  return p;
+  return make_liquid_3d(prm, lay, {dx, dx, dx}, H);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "liquid_tank.h"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -41,6 +42,27 @@ void add_tank_walls(LiquidLayout& out, double L, double H, double dx, WallType t
       if (x > 0.0 && x < L && y > 0.0) continue;  // inside the tank
       out.walls.push_back({x, y, 0.0});
     }
+}
+
+Particles make_liquid_3d(const Params& prm, const LiquidLayout& layout, Vec3 a, double surface) {
+  const std::size_t nf = layout.fluid.size(), n = nf + layout.walls.size();
+  Particles p = make_particles(prm, 3, n);
+  const LiquidParams& l = prm.liquid;
+  const double g = -prm.body.gz, vol = a.x * a.y * a.z;
+  const double h = effective_eta(prm, 3) * (a.x == a.y && a.y == a.z ? a.x : std::cbrt(vol));  // a cubic lattice's dx exactly
+  for (std::size_t k = 0; k < n; ++k) {
+    const bool wall = k >= nf;
+    const Vec3 x = wall ? layout.walls[k - nf] : layout.fluid[k];
+    p.x[0][k] = x.x;
+    p.x[1][k] = x.y;
+    p.x[2][k] = x.z;
+    const double rho = wall ? l.rho0 : eos::tait_density(l.rho0 * g * std::max(0.0, surface - x.z) + l.p0, l);
+    p[Field::Mass][k] = rho * vol;
+    p[Field::H][k] = h;
+    if (p.has(Field::Density)) p[Field::Density][k] = rho;
+    p.kind[k] = static_cast<std::uint8_t>(wall ? Kind::Wall : Kind::Fluid);
+  }
+  return p;
 }
 
 Params liquid_params(double c0, double alpha) {

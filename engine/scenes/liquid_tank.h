@@ -52,6 +52,11 @@ Params tank_params(double H, double alpha);
 /// tank_params).
 SceneSpec liquid_scene(std::string name, std::string description, std::vector<std::string> walls);
 
+/// make_liquid in 3D with gravity along -z: the fluid's rho from the hydrostatic column below `surface`
+/// (Tait inverted, g = -body.gz), mass rho a.x a.y a.z on a lattice of spacings a (walls rho0), every
+/// h = eta (a.x a.y a.z)^(1/3).
+Particles make_liquid_3d(const Params& prm, const LiquidLayout& layout, Vec3 a, double surface);
+
 /// Lennard-Jones strength of seed 001 §7.2: D = 5 g H.
 /// The reference guard of a weakly compressible liquid of height H = factor x scene value `key`: the
 /// references are incompressible, which the liquid follows while c0 >= 10 sqrt(2 g H) (the defaults).

@@ -278,6 +278,13 @@ ok "help keplr: suggestion" grep -q "did you mean kepler?" "$work/help_typo.err"
 "$sph" run sod --set scene.n_left=50 --until 0 --vtu 2> "$work/vtu.err" > /dev/null; check "--vtu without --out" 2 $?
 ok "--vtu without --out: says why" grep -q -- "--vtu needs --out" "$work/vtu.err"
 bad hdf5_of_fpm 2 "finite pointset" run burgers_upwind --hdf5
+bad probe_no_reference 2 "no reference" run box_lattice --probe-every 0.01
+
+# --probe-every: errors.csv every DT of simulated time, the particle files at time.dt_out as before
+"$sph" run dam_break --set scene.dx=0.1 --until 0.1 --probe-every 0.01 --out "$work/probe" --quiet; check "--probe-every" 0 $?
+ok "--probe-every: a row at t = 0 and every 0.01 s (11 rows)" test "$(tail -n +2 "$work/probe/errors.csv" | wc -l)" = 11
+ok "--probe-every: the row at t = 0.05 s" grep -q "^0.05," "$work/probe/errors.csv"
+ok "--probe-every: particle files at time.dt_out (0.05) only" test "$(ls "$work/probe" | grep -c '^particles_')" = 3
 "$sph" export-ics sod --format swfit --out "$work/x.hdf5" 2> "$work/exf.err"; check "export-ics bad format" 2 $?
 ok "export-ics bad format: suggestion" grep -q "did you mean swift?" "$work/exf.err"
 ok "export-ics bad format: nothing written" test ! -e "$work/x.hdf5"

@@ -52,6 +52,9 @@ class RunChecks {
   void check_dt(double dt, double dt_free, bool adaptive, const Particles& p, std::int64_t step, double t);
   /// Throws when a particle escaped through a wall; warns when particles had to be reflected back.
   void check_walls(const Particles& p, const Params& prm, std::int64_t step, double t);
+  /// A scene with wall particles: warns (kind "domain") when fluid particles are outside the domain box
+  /// along an open axis: they went through a wall or were flung far beyond the scene (run_checks_domain.cpp).
+  void check_domain(const Particles& p, const Domain& d, std::int64_t step, double t);
   /// Warns when the h solve did not converge for some particles.
   void check_h_solve(const DensityStats& d, std::int64_t step, double t);
   /// Throws DivergedError when E_tot has grown far beyond its initial scale (a finite blow-up); warns

@@ -10,7 +10,7 @@ namespace sph {
 /// (the first time it happened, and how many checks found it since), for the run's summary, the
 /// warnings.csv of `sph run --out` and the GUI's status line.
 struct RunWarning {
-  std::string kind;            ///< "energy", "h_solve", "wall", "reference", "timestep"
+  std::string kind;            ///< "energy", "h_solve", "wall", "domain", "reference", "timestep"
   std::string message;         ///< one line, naming the parameter to change where there is one
   std::int64_t step = 0;       ///< the step it was first found at
   double t = 0.0;              ///< and its time

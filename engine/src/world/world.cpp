@@ -171,6 +171,7 @@ void World::advance(double dt_max) {
 void World::check_step() {
   RunChecks::check_finite(p_, step_, t_);
   checks_.check_walls(p_, cfg_.params, step_, t_);
+  checks_.check_domain(p_, domain_, step_, t_);
   checks_.check_h_solve(stats_->density, step_, t_);
   // inside a block of individual steps the state is part predicted: its energy is checked at the block's end
   if (!block_ || block_->synchronised())
