@@ -42,6 +42,8 @@ class Reference {
   /// The time up to which the comparison means what it says (e.g. until a wave reaches a wall and the
   /// unbounded exact solution no longer applies); infinity when it always applies.
   virtual double valid_until() const { return std::numeric_limits<double>::infinity(); }
+  /// Why the comparison stops there, for the run's warning.
+  virtual std::string valid_until_reason() const { return "waves have reached a boundary"; }
   /// Measured/exact column pairs the GUI plots together against time (e.g. the drop's semi-axes).
   virtual std::vector<std::pair<int, int>> series() const { return {}; }
   /// What later values depend on besides the particles and t (e.g. a fit over every evaluation so far),

@@ -1,4 +1,4 @@
-// The gauges of SPHERIC test 2 (Kleefsman et al. 2005, Fig. 4; Issa & Violeau 2006) read from the particles:
+// The gauges of SPHERIC test 2 (Kleefsman et al. 2005; Issa & Violeau 2006) read from the particles:
 //  - a water height H at (x, 0.5): the fluid volume above the floor per unit area, sum_i V_i w(|r_i - x|)
 //    over the particles' horizontal distances with a normalised 2D cubic spline w of smoothing length
 //    2 dx (support 4 dx): a lattice column of height h gives h, splashes count as the volume they carry;
@@ -80,6 +80,7 @@ class DamBreak3dReference final : public Reference {
   int primary() const override { return 12; }
   std::vector<std::pair<int, int>> series() const override { return {{1, 4}, {3, 5}, {6, 7}}; }
   double valid_until() const override { return kleefsman_end(); }
+  std::string valid_until_reason() const override { return "the measured series kept here end"; }
   std::vector<double> saved_state() const override { return {peak_, peak_t_}; }
   bool restore_state(const std::vector<double>& s) override {
     if (s.size() != 2) return false;

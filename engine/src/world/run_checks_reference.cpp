@@ -77,11 +77,10 @@ void RunChecks::check_reference(const Reference* ref, std::int64_t step, double 
   if (!ref) return;
   const double until = ref->valid_until();
   if (!(t > until * (1.0 + 1e-12))) return;
-  char what[240];
+  char what[320];
   std::snprintf(what, sizeof what,
-                "from t = %.4g waves have reached a boundary: the reference no longer applies (errors.csv marks those "
-                "rows valid = 0)",
-                until);
+                "from t = %.4g %s: the reference no longer applies (errors.csv marks those rows valid = 0)", until,
+                ref->valid_until_reason().c_str());
   warn("reference", -1, what, step, t);
 }
 
