@@ -61,7 +61,7 @@ SPH_SCENE(112, dam_break_3d_scene) {
   s.params = {spacing_param(0.04)};
   s.defaults = tank_params(H, 0.1);
   std::swap(s.defaults.body.gy, s.defaults.body.gz);  // gravity along -z, the 3D views' up
-  set_run_times(s.defaults, 6.0, 0.1);                 // the experiment's record lasts 6 s
+  set_run_times(s.defaults, 6.0, 0.1);                 // the benchmark compares the first 6 s
   s.build = [](const Params& prm, const SceneValues& v) {
     const double dx = v.at("dx");
     SceneSetup out{dam_break_3d(prm, dx), {}, dx, lj_strength(kTankGravity, H)};
