@@ -3,7 +3,7 @@
 //    over the particles' horizontal distances with a normalised 2D cubic spline w of smoothing length
 //    2 dx (support 4 dx): a lattice column of height h gives h, splashes count as the volume they carry;
 //  - the pressure P1 at (face + dx, 0.471, 0.021): the Shepard average sum_i V_i P_i W / sum_i V_i W over
-//    the fluid with the particles' kernel, one spacing into the water from the box's face; 0 where the
+//    the fluid with the M4 spline of the particles' h, one spacing into the water from the box's face; 0 where the
 //    kernel holds less than a third of a full neighbourhood's volume (the sensor is dry).
 // The measured series are MARIN's (kleefsman_data.h); the heights' error is |H - H_exp| / depth.
 #include "dam_break_3d_reference.h"
@@ -11,9 +11,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 
 #include "kleefsman_data.h"
+#include "sph/kernel.h"
 
 namespace sph::scenes {
 namespace {
@@ -21,16 +21,10 @@ namespace {
 constexpr double kGaugeX[4] = {0.496, 0.992, 1.488, 2.638}, kGaugeY = 0.5;  // H1-H4 [m]
 constexpr double kP1y = 0.471, kP1z = 0.021;                                 // P1 on the box's face [m]
 
-/// The 3D (d = 3) or 2D (d = 2) M4 cubic spline W(r, h) [1/length^d] (seed 000 eq. 3.2.6).
-double m4(double r, double h, int d) {
-  const double q = r / h, sigma = d == 3 ? 1.0 / std::numbers::pi : 10.0 / (7.0 * std::numbers::pi);
-  const double f = q < 1.0 ? 1.0 - 1.5 * q * q + 0.75 * q * q * q : q < 2.0 ? 0.25 * (2.0 - q) * (2.0 - q) * (2.0 - q) : 0.0;
-  return sigma * f / (d == 3 ? h * h * h : h * h);
-}
-
 class DamBreak3dReference final : public Reference {
  public:
-  DamBreak3dReference(std::array<double, 3> a, double depth, double face) : a_(a), depth_(depth), face_(face) {}
+  DamBreak3dReference(std::array<double, 3> a, double depth, double face)
+      : a_(a), depth_(depth), face_(face), plane_(KernelType::M4, 2), space_(KernelType::M4, 3) {}
 
   std::vector<RefColumn> columns() const override {
     return {{"H1", "water height at gauge H1 (x = 0.496 m) [m]", false},
@@ -58,9 +52,9 @@ class DamBreak3dReference final : public Reference {
     const double* h = p[Field::H].data();
     for (std::size_t i = 0; i < p.fluid(); ++i) {
       const double V = m[i] / rho[i], x = p.x[0][i], y = p.x[1][i], z = p.x[2][i];
-      for (int g = 0; g < 4; ++g) Hg[g] += V * m4(std::hypot(x - kGaugeX[g], y - kGaugeY), hg, 2);
-      const double w = V * m4(std::sqrt((x - face_ - dx) * (x - face_ - dx) + (y - kP1y) * (y - kP1y) +
-                                        (z - kP1z) * (z - kP1z)), h[i], 3);
+      for (int g = 0; g < 4; ++g) Hg[g] += V * plane_.W(std::hypot(x - kGaugeX[g], y - kGaugeY), hg);
+      const double w = V * space_.W(std::sqrt((x - face_ - dx) * (x - face_ - dx) + (y - kP1y) * (y - kP1y) +
+                                        (z - kP1z) * (z - kP1z)), h[i]);
       psum += w * P[i];
       wsum += w;
     }
@@ -92,6 +86,7 @@ class DamBreak3dReference final : public Reference {
  private:
   std::array<double, 3> a_;
   double depth_, face_;
+  Kernel plane_, space_;  ///< the M4 spline in 2D (the gauges' footprint) and 3D (P1's average)
   mutable double peak_ = -std::numeric_limits<double>::infinity(), peak_t_ = 0.0;
 };
 
