@@ -35,8 +35,10 @@ std::string hdf5_unsupported(const Params& p);
 /// Flag_Entropy_ICs, Flag_DoublePrecision, Dimension), /Units (cgs), /HydroScheme (adiabatic index),
 /// /PartType0 (gas: Coordinates, Velocities, Masses, SmoothingLength, InternalEnergy, Density,
 /// ParticleIDs) or /PartType1 (N-body: Coordinates, Velocities, Masses, ParticleIDs), and /SPHSandbox
-/// (this code's scene, box and walls, so `sph run FILE` restores the same state). Coordinates are shifted
-/// into [0, BoxSize). Throws std::runtime_error if hdf5_unsupported() says why not.
+/// (this code's scene, box and walls, so `sph run FILE` restores the same state); SWIFT files also carry
+/// SWIFT's snapshot metadata (/Header Code, /RuntimePars, /Policy, ...: yt opens them with their units).
+/// Coordinates are shifted into [0, BoxSize) (open axes: one box per run, io/export_box.h). Throws
+/// std::runtime_error if hdf5_unsupported() says why not.
 std::string hdf5_snapshot(const World& world, IcFormat format);
 
 /// The target code's parameter file for running `ic_file` (SWIFT: YAML with the ./configure line it

@@ -16,15 +16,19 @@ ExportBox export_box(const World& world) {
       if (d.bc[k] == Boundary::Wall) b.wall_axes.push_back(k);
       continue;
     }
+    // open: four times the scene's domain (its view box, the same for the whole run) about its centre, so
+    // the snapshots of a run share one frame; doubled while a particle lies outside [0, BoxSize)
     double lo = 0.0, hi = 0.0;
     if (p.size() > 0) {
       const auto [mn, mx] = std::minmax_element(p.x[k].begin(), p.x[k].begin() + static_cast<std::ptrdiff_t>(p.size()));
       lo = *mn;
       hi = *mx;
     }
-    const double extent = hi - lo;
-    b.size[k] = extent > 0.0 ? 4.0 * extent : 1.0;
-    b.shift[k] = 0.5 * b.size[k] - 0.5 * (lo + hi);
+    const double centre = 0.5 * (d.lo[k] + d.hi[k]);
+    double size = d.length(k) > 0.0 ? 4.0 * d.length(k) : 1.0;
+    for (int grow = 0; grow < 64 && (lo < centre - 0.5 * size || hi >= centre + 0.5 * size); ++grow) size *= 2.0;
+    b.size[k] = size;
+    b.shift[k] = 0.5 * size - centre;
   }
   return b;
 }

@@ -1,6 +1,7 @@
 // Where the particles of a scene sit in the box of the SWIFT/GADGET layout: those codes put a periodic
-// box at [0, BoxSize), so coordinates are shifted; open axes get a box four times the particles' extent
-// around them; mirror walls have no counterpart (the target's box is periodic there).
+// box at [0, BoxSize), so coordinates are shifted; open axes get a box four times the scene's domain
+// about its centre (one frame for a whole run); mirror walls have no counterpart (the target's box is
+// periodic there).
 #pragma once
 #include <array>
 #include <vector>

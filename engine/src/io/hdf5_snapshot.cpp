@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "io/export_box.h"
+#include "io/hdf5_swift_groups.h"
 #include "io/hdf5_util.h"
 #include "sph/ic_export.h"
 
@@ -90,6 +91,11 @@ std::string hdf5_snapshot(const World& world, IcFormat format) {
     h5::write_attr(hydro.get(), "Adiabatic index", world.params().gas.gamma);
   }
   write_sandbox(file.get(), world, box, h_factor, format);
+  if (format == IcFormat::Swift) {  // not in GADGET-4 files: yt would take them for SWIFT's (see README)
+    const KernelMapping km = kernel_mapping(world.params().kernel.type, p.dim(), format);
+    write_swift_groups(file.get(), {box.periodic, !nbody, world.params().physics.gravity != GravityType::None, p.dim(),
+                                    km.name, km.ratio});
+  }
 
   h5::Handle part = h5::create_group(file.get(), nbody ? "PartType1" : "PartType0");
   std::vector<double> vec(3 * n), scalar(n);
