@@ -81,6 +81,8 @@ PYBIND11_MODULE(sphsandbox, m) {
           "Steps until time t (the last step lands on t), then checks the state as sph run does before an output.");
   cls.def("set_params", [](PyWorld& w, const pyb::object& set) { w.set_params(overrides(set)); }, pyb::arg("set"),
           "Run-parameter overrides from the next step on (as the GUI's live edits); scene.* keys need a new World.");
+  cls.def_property_readonly("generation", &PyWorld::generation,
+                            "Changes whenever the world does (step, run_to, set_params): field() views taken before are stale.");
   bind_fields(cls);
   bind_report(cls);
   bind_render(cls);

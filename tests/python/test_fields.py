@@ -55,3 +55,11 @@ def test_fields_hold_the_physics_mass_and_energy(sedov):
     assert abs(m.sum() - 1.0) < 1e-12
     assert abs(0.5 * (m * (vx ** 2 + vy ** 2)).sum() - d["E_kin"]) < 1e-12 * max(1.0, d["E_kin"])
     assert abs((m * u).sum() - d["E_int"]) < 1e-12 * max(1.0, d["E_int"])
+
+
+def test_generation_tells_when_views_are_stale(sedov):
+    g = sedov.generation
+    sedov.field("rho")
+    assert sedov.generation == g  # reading changes nothing
+    sedov.step()
+    assert sedov.generation != g
