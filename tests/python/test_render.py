@@ -36,3 +36,15 @@ def test_render_bad_field_or_size_raises_value_error():
         w.render(width=4, height=4)
     with pytest.raises(ValueError, match="cmap"):
         w.render(cmap="rainbow")
+
+
+def test_render_3d_cut_and_orbit_change_the_picture_and_bad_ones_raise():
+    w = sph.World("hydrostatic_tank_3d")
+    full = w.render(width=320, height=240, color_by="p")
+    cut = w.render(width=320, height=240, color_by="p", cut="y=0.0")  # the near half removed: the water shows
+    turned = w.render(width=320, height=240, color_by="p", yaw=120.0)
+    assert (full != cut).any(axis=2).sum() > 1000 and (full != turned).any(axis=2).sum() > 1000
+    with pytest.raises(ValueError, match="cut"):
+        w.render(cut="w=1")
+    with pytest.raises(ValueError, match="pitch"):
+        w.render(pitch=95.0)
