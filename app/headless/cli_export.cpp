@@ -71,6 +71,9 @@ int export_command(const ExportOptions& opt) {
   }
   std::printf("%s: %zu particles of %s (%s layout), parameter file %s\n", opt.out.c_str(), world->particles().size(),
               cfg.scene->name.c_str(), opt.format.c_str(), param_path.c_str());
+  if (format == IcFormat::Swift)  // the YAML names its file relative to the folder it is in
+    std::printf("run: cd %s && %s\n", dir.empty() ? "." : dir.string().c_str(),
+                swift_run_line(cfg.params, std::filesystem::path(param_path).filename().string()).c_str());
   if (!warnings.empty()) {
     std::fprintf(stderr, "what %s cannot reproduce (%zu):\n", format == IcFormat::Swift ? "SWIFT" : "GADGET-4",
                  warnings.size());

@@ -6,6 +6,8 @@
 
 #include <cmath>
 
+#include "io/swift_softening.h"
+
 namespace sph {
 namespace {
 
@@ -70,6 +72,50 @@ TEST(ParameterFile, Gadget4GetsItsNeighbourNumberAndConfigOptions) {
   EXPECT_NE(txt.find("InitCondFile                      box"), std::string::npos);
   EXPECT_NE(txt.find("BoxSize                           1"), std::string::npos);
   EXPECT_TRUE(warnings.empty()) << warnings.front();
+}
+
+TEST(CourantFactor, ThroughEachCodesStepFormula) {
+  // SWIFT and GADGET-4: dt = 2 F H / v_sig with v_sig = c_i + c_j + 3|mu|; here dt = cfl (H / support) /
+  // (c_bar + 2|w|): (3/4) cfl / support, so never a longer step (copying cfl made SWIFT's twice as long)
+  EXPECT_DOUBLE_EQ(courant_factor(0.3, KernelType::M4, 2), 0.1125);
+  EXPECT_DOUBLE_EQ(courant_factor(0.3, KernelType::M6, 3), 0.075);
+  for (double x : {0.0, 0.5, 1.0, 4.0, 100.0}) {  // approach speed over c_bar = 1, H = 1
+    const double cfl = 0.3, F = courant_factor(cfl, KernelType::M4, 2);
+    const double here = cfl / 2.0 / (1.0 + 2.0 * x), target = 2.0 * F / (2.0 + 3.0 * x);
+    EXPECT_LE(target, here * (1.0 + 1e-12)) << "x = " << x;
+    EXPECT_GE(target, 0.75 * here * (1.0 - 1e-12)) << "x = " << x;
+  }
+}
+
+TEST(ParameterFile, SwiftKeysTheMappedCflAndTheLimiter) {
+  RunConfig cfg = RunConfig::from_scene("sedov");
+  cfg.set("scene.n_side", "40", "test");
+  const World w(cfg);
+  std::vector<std::string> warnings;
+  const std::string yml = parameter_file(w, IcFormat::Swift, "sedov.hdf5", &warnings);
+  EXPECT_NE(yml.find("CFL_condition:   0.1125 "), std::string::npos) << yml;  // time.cfl 0.3, M4
+  EXPECT_NE(yml.find("  h_tolerance:     1e-06\n"), std::string::npos);        // SWIFT's key
+  EXPECT_EQ(yml.find("h_relative_tolerance"), std::string::npos);
+  EXPECT_NE(yml.find("# Run: swift --hydro --limiter --threads=2"), std::string::npos);
+  EXPECT_EQ(swift_run_line(w.params(), "s.yml"), "swift --hydro --limiter --threads=2 s.yml");
+  bool conduction = false;
+  for (const std::string& m : warnings) conduction = conduction || m.find("physics.conduction") != std::string::npos;
+  EXPECT_TRUE(conduction);
+  const std::string txt = parameter_file(w, IcFormat::Gadget4, "sedov.hdf5", &warnings);
+  EXPECT_NE(txt.find("CourantFac                        0.1125"), std::string::npos) << txt;
+}
+
+TEST(SwiftSoftening, SamePotentialEnergyAsPlummer) {
+  // two unit masses 0.2 apart, Plummer eps = 0.1: SWIFT's phi(r, H = 3 eps_S) = -1/sqrt(r^2 + eps^2)
+  Particles p(3, 2, FieldSet{}.add(Field::Mass));
+  p.x[0][1] = 0.2;
+  p[Field::Mass][0] = p[Field::Mass][1] = 1.0;
+  const double eps_s = swift_softening_matching_plummer(p, 2, 0.1);
+  const double u = 0.2 / (3.0 * eps_s), u2 = u * u, u4 = u2 * u2;
+  const double phi = (3 * u4 * u2 * u - 15 * u4 * u2 + 28 * u4 * u - 21 * u4 + 7 * u2 - 3) / (3.0 * eps_s);
+  EXPECT_LT(u, 1.0);
+  EXPECT_NEAR(phi, -1.0 / std::sqrt(0.04 + 0.01), 1e-8);
+  EXPECT_EQ(swift_softening_matching_plummer(p, kSoftMatchMaxN + 1, 0.1), 0.0);  // too many: not matched
 }
 
 TEST(Hdf5Snapshot, RefusesTheFinitePointsetMethod) {

@@ -26,6 +26,14 @@ KernelMapping kernel_mapping(KernelType k, int dim, IcFormat f);
 /// radius, gamma_K the kernel's H/h), GADGET-4's is H itself.
 double smoothing_length_factor(KernelType k, int dim, IcFormat f);
 
+/// The target's Courant factor (SWIFT's SPH:CFL_condition, GADGET-4's CourantFac) for this code's
+/// time.cfl: (3/4) cfl / support, the largest whose step is nowhere longer than this code's (the three
+/// step formulas are in io/ic_mapping.cpp).
+double courant_factor(double cfl, KernelType k, int dim);
+
+/// The command line that runs the exported SWIFT parameter file (flags from the scene's stages).
+std::string swift_run_line(const Params& p, const std::string& param_file);
+
 /// Why the scene cannot be written in this layout ("" when it can): the finite pointset method has no
 /// SPH or N-body state.
 std::string hdf5_unsupported(const Params& p);
