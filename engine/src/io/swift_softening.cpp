@@ -1,6 +1,7 @@
 #include "io/swift_softening.h"
 
 #include <cmath>
+#include <vector>
 
 namespace sph {
 namespace {
@@ -13,11 +14,12 @@ double swift_phi(double r, double H) {
   return (3.0 * u4 * u2 * u - 15.0 * u4 * u2 + 28.0 * u4 * u - 21.0 * u4 + 7.0 * u2 - 3.0) / H;
 }
 
-/// sum over pairs of m_i m_j phi(r_ij) for SWIFT's law (H > 0) or Plummer's (H = 0, eps2 used).
+/// sum over pairs of m_i m_j phi(r_ij) for SWIFT's law (H > 0) or Plummer's (H = 0, eps2 used): rows in
+/// parallel, then summed in order, so the result (and the exported eps) is the same for any thread count.
 double pair_sum(const Particles& p, std::size_t n, double H, double eps2) {
   const auto& m = p[Field::Mass];
-  double sum = 0.0;
-#pragma omp parallel for reduction(+ : sum) schedule(dynamic, 64)
+  std::vector<double> rows(n, 0.0);
+#pragma omp parallel for schedule(dynamic, 64)
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 xi = p.pos(i);
     double row = 0.0;
@@ -25,8 +27,10 @@ double pair_sum(const Particles& p, std::size_t n, double H, double eps2) {
       const double r2 = (p.pos(j) - xi).norm2();
       row += m[j] * (H > 0.0 ? swift_phi(std::sqrt(r2), H) : -1.0 / std::sqrt(r2 + eps2));
     }
-    sum += m[i] * row;
+    rows[i] = m[i] * row;
   }
+  double sum = 0.0;
+  for (double r : rows) sum += r;
   return sum;
 }
 
