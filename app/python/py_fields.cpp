@@ -19,10 +19,11 @@ namespace pyb = pybind11;
 
 constexpr const char* kAxes[3] = {"x", "y", "z"};
 
-/// The engine's storage of `name` and its length (the real particles); null data if there is none.
+/// The engine's storage of `name` (found false if the scene has no such field).
 struct Storage {
   const void* data = nullptr;
   pyb::dtype type = pyb::dtype::of<double>();
+  bool found = true;
 };
 
 Storage find_storage(const Particles& p, const std::string& name) {
@@ -35,7 +36,7 @@ Storage find_storage(const Particles& p, const std::string& name) {
   if (name == "kind") return {p.kind.data(), pyb::dtype::of<std::uint8_t>()};
   for (std::size_t f = 0; f < kFieldCount; ++f)
     if (kFieldInfo[f].key == name && p.has(static_cast<Field>(f))) return {p[static_cast<Field>(f)].data()};
-  return {};
+  return {nullptr, pyb::dtype::of<double>(), false};
 }
 
 std::vector<std::string> field_names(const Particles& p) {
@@ -49,7 +50,7 @@ std::vector<std::string> field_names(const Particles& p) {
 
 Storage storage_or_throw(const Particles& p, const std::string& name) {
   Storage s = find_storage(p, name);
-  if (!s.data) {
+  if (!s.found) {
     std::string known;
     for (const std::string& n : field_names(p)) known += (known.empty() ? "" : ", ") + n;
     throw pyb::key_error("field '" + name + "': not a field of this scene (it has: " + known + ")");
