@@ -1,6 +1,7 @@
 #include "py_world.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "sph/checkpoint.h"
@@ -52,7 +53,9 @@ void PyWorld::step(double dt_max) {
 }
 
 void PyWorld::run_to(double t) {
-  if (!(t >= world_->time())) throw ConfigError("run_to: t = " + std::to_string(t) + " is before the world's time");
+  if (!std::isfinite(t) || t < world_->time())
+    throw ConfigError("run_to: t = " + std::to_string(t) + ": expected a finite time not before the world's (" +
+                      std::to_string(world_->time()) + ")");
   ++generation_;
   // the steps of `sph run --until t` (cli_run.cpp): each at most to the next output time (a multiple of
   // time.dt_out, else of t_end) or t, an output time counting as reached within 1e-12; so a run from

@@ -50,6 +50,15 @@ def test_step_advances_time_and_run_to_lands_on_t():
     assert math.isclose(w.time, 0.05 + 1e-5, rel_tol=1e-12)
 
 
+def test_run_to_refuses_a_time_before_now_or_not_finite():
+    w = sph.World("sod", set={"scene.n_left": 100})
+    w.run_to(0.01)
+    for t in (0.005, float("inf"), float("nan")):
+        with pytest.raises(sph.ConfigError, match="run_to"):
+            w.run_to(t)
+    assert w.time == 0.01
+
+
 def test_set_params_takes_effect_and_refuses_scene_values():
     w = sph.World("sod", set={"scene.n_left": 100})
     w.set_params({"cfl": 0.1})
