@@ -62,6 +62,17 @@ TEST(ParameterFile, SwiftGetsTheSameSupportInSpacings) {
   EXPECT_TRUE(walls);
 }
 
+TEST(ParameterFile, SwiftStepsAndOutputsFitARunShorterThanItsOutputInterval) {
+  // evrard outputs every 0.1; exported to run to 0.01, SWIFT refused dt_max 0.1 > time_end - time_begin
+  RunConfig cfg = RunConfig::from_scene("evrard");
+  cfg.set("scene.n", "500", "test");
+  cfg.set("time.t_end", "0.01", "test");
+  const World w(cfg);
+  std::vector<std::string> warnings;
+  const std::string yml = parameter_file(w, IcFormat::Swift, "evrard.hdf5", &warnings);
+  EXPECT_NE(yml.find("dt_max:     0.01\n"), std::string::npos) << yml;
+}
+
 TEST(ParameterFile, Gadget4GetsItsNeighbourNumberAndConfigOptions) {
   RunConfig cfg = RunConfig::from_scene("box_lattice");
   const World w(cfg);

@@ -1,6 +1,7 @@
 // Kernel mapping and the parameter files of SWIFT (YAML) and GADGET-4 (param.txt + Config.sh options).
 #include "sph/ic_export.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -106,7 +107,10 @@ std::string swift_file(const World& world, const std::string& ic_file, std::vect
     else if (index) configure += std::string(" --with-adiabatic-index=") + index;
     else w->push_back("gas.gamma = " + num(g) + ": SWIFT compiles only 5/3, 7/5, 4/3 or 2 (--with-adiabatic-index)");
   }
-  const double dt_out = prm.time.dt_out > 0.0 ? prm.time.dt_out : prm.time.t_end;
+  // outputs every dt_out, but no longer than the run: SWIFT refuses a dt_max beyond time_end - time_begin
+  // (evrard exported with --until 0.01 and dt_max 0.1: "Maximal time-step size larger than the simulation run time")
+  const double run = prm.time.t_end - world.time();
+  const double dt_out = std::min(prm.time.dt_out > 0.0 ? prm.time.dt_out : prm.time.t_end, run > 0.0 ? run : prm.time.t_end);
   std::string s = "# SWIFT parameter file for " + ic_file + ", written by `sph export-ics " + world.config().scene->name +
                   " --format swift`.\n# Build SWIFT with:\n#   " + configure + "\n# Run: " +
                   swift_run_line(prm, "PARAMETER_FILE") + "\n# Scene units: " + u.name + ".\n\n";
