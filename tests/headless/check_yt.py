@@ -1,6 +1,8 @@
-"""Opens the HDF5 files `sph` writes with yt.load(path) alone (README "Outputs", "Initial conditions for SWIFT
-and GADGET-4") and checks yt's units and per-particle density, positions and smoothing lengths against the CSV
-files of the same states, matched by ParticleIDs.
+"""Opens the HDF5 files `sph` writes in yt (README "Outputs", "Initial conditions for SWIFT and GADGET-4") and
+checks yt's units and per-particle density, positions and smoothing lengths against the CSV files of the same
+states, matched by ParticleIDs. Every file is opened with yt.load(path) alone; two things a file cannot give yt
+4.1 (nor yt's main branch) without saying something false, so the check adds them (see open_swift and
+check_gadget4): three periodicity flags for a 1D/2D SWIFT file, the units and open box of a GADGET-4 file.
 usage: /usr/bin/python3 check_yt.py SPH_BINARY WORK_DIR
 Exit 0: every check holds; 1: one failed (the message names the file and the quantity); 77: yt or h5py cannot be
 imported (skipped)."""
@@ -75,9 +77,13 @@ def open_swift(path, gamma_k):
     if type(ds).__name__ != "SwiftDataset":
         fail("%s: yt chose %s, not its SWIFT frontend" % (path, type(ds).__name__))
     if len(ds.periodicity) < 3:
-        # yt 4.1.4's SWIFT frontend gives a 2D file two periodicity flags where its particle index reads three
-        # (it fails so on SWIFT's own 2D snapshots): its public force_periodicity() gives three. The box is
-        # periodic or four times the scene's domain, so no kernel reaches across it either way.
+        # yt's SWIFT frontend makes one periodicity flag per /Header Dimension (yt/frontends/swift/
+        # data_structures.py:113-121 in 4.1.4) and nothing else in the file changes that count, while
+        # ParticleBitmap.__init__ (yt/geometry/particle_oct_container.pyx) reads three: IndexError at the first
+        # field. Dimension must stay 2: it says the density is mass per area, and SWIFT refuses an IC whose
+        # Dimension is not its hydro dimension (its common_io.c); SWIFT's own 2D snapshots fail in yt alike.
+        # yt's public force_periodicity() gives three flags; the box is periodic or four times the scene's
+        # domain, so no kernel reaches across it either way.
         ds.force_periodicity()
     with h5py.File(path, "r") as f:
         box = f["Header"].attrs["BoxSize"]
@@ -92,9 +98,9 @@ def open_swift(path, gamma_k):
     return ds
 
 
-def check_particles(ds, path, rows, h_factor):
-    """Density (code units and g/cm^3), positions (less the file's shift) and smoothing lengths (over h_factor,
-    the file's h per this code's h) by id."""
+def check_particles(ds, path, rows, h_factor, cgs=True):
+    """Density (code units and, if cgs, g/cm^3), positions (less the file's shift) and smoothing lengths (over
+    h_factor, the file's h per this code's h) by id."""
     with h5py.File(path, "r") as f:
         shift = f["SPHSandbox"].attrs["coordinate_shift"]
         dim = int(f["Header"].attrs["Dimension"])
@@ -106,8 +112,9 @@ def check_particles(ds, path, rows, h_factor):
     want = {k: np.array([rows[i][k] for i in ids]) for k in ("rho", "h", "x", "y", "z")}
     rho = ad["gas", "density"]
     compare(path, "density [code]", rho.to("code_mass/code_length**3").v, want["rho"], np.abs(want["rho"]))
-    cgs = want["rho"] * u["Unit mass in cgs (U_M)"] / u["Unit length in cgs (U_L)"] ** 3
-    compare(path, "density [g/cm^3]", rho.to("g/cm**3").v, cgs, np.abs(cgs))
+    if cgs:
+        rho_cgs = want["rho"] * u["Unit mass in cgs (U_M)"] / u["Unit length in cgs (U_L)"] ** 3
+        compare(path, "density [g/cm^3]", rho.to("g/cm**3").v, rho_cgs, np.abs(rho_cgs))
     pos = ad["PartType0", "particle_position"].to("code_length").v
     width = ds.domain_width.to("code_length").v
     for k, c in enumerate("xyz"[:dim]):
@@ -135,9 +142,16 @@ def check_run(name, scene, gamma_k, *sets):
 
 
 def check_gadget4(path, rows, h_factor):
-    """yt's Gadget frontend takes a GADGET-4 file and never reads its /Units (yt 4.1.4 alone: 1 kpc, 1e10 Msun,
-    sedov3d's density 6.7e-22 g/cm^3 for 1): yt.load with unit_base from /Units and the box gives the values."""
+    """yt.load(path) alone takes a GADGET-4 file with its Gadget frontend and reads every value right in code
+    units, but its units are never the file's: GadgetDataset keeps unit_base from yt.load's argument only
+    (yt/frontends/gadget/data_structures.py:289 in 4.1.4) and without it takes 1 kpc, 1e10 Msun, 1 km/s
+    (:446-454, :486, :501; sedov3d's density 6.7e-22 g/cm^3 for 1); /Header and /Parameters attributes go to
+    ds.parameters only (:616-633), /Units is read by the OWLS/EAGLE frontends alone, which need OWLS's groups
+    and take the file for a comoving cosmological run. With BoxSize 0 (an open box, GADGET-4's convention) yt
+    infers a box from the particles (yt/geometry/particle_geometry_handler.py:118-141). So the values are
+    checked in code units with yt.load alone, and in cgs with unit_base from /Units and a bounding box."""
     alone = yt.load(path)
+    check_particles(alone, path, rows, h_factor, cgs=False)
     print("note: yt.load(%s) alone: %s with length_unit %s (yt reads no units from a GADGET file)"
           % (os.path.basename(path), type(alone).__name__, alone.length_unit.to("cm")))
     with h5py.File(path, "r") as f:
