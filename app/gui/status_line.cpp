@@ -79,6 +79,12 @@ void status_line(GuiState& s, const FrameStats& stats) {
   std::snprintf(buf, sizeof buf, "|   N = %zu   <neighbours> %.1f   h-iterations %.2f (max %d)", snap.count,
                 f->density.mean_neighbours, f->density.mean_iterations, f->density.max_iterations);
   segment(buf, std::nullopt);
+  if (f->config.params.physics.eos == EosType::Dfsph) {  // the pressure solves of the last step
+    const Diagnostics& d = f->diagnostics;
+    std::snprintf(buf, sizeof buf, "|   DFSPH iterations %d + %d (divergence)   density error %.3g%% (max %.3g%%)",
+                  d.dfsph_iter, d.dfsph_div_iter, 100.0 * d.dfsph_error, 100.0 * d.dfsph_error_max);
+    segment(buf, std::nullopt);
+  }
   std::snprintf(buf, sizeof buf, "|   display %.0f fps (%.0f drawn)", stats.fps(), stats.drawn_fps());
   segment(buf, std::nullopt);
   if (f->record_every > 0.0) {

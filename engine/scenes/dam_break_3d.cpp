@@ -56,7 +56,7 @@ SPH_SCENE(112, dam_break_3d_scene) {
                            "SPHERIC test 2: a 0.55 m column hits a box in a 3.22 m tank; gauges H2, H4 and sensor P1 "
                            "against the MARIN measurements (Kleefsman et al. 2005)",
                            3, UnitSystem::si());
-  s.allow(Slot::Eos, {"tait"});
+  s.allow(Slot::Eos, {"tait", "dfsph"});
   s.allow(Slot::Walls, {"dummy"});
   s.params = {spacing_param(0.04)};
   s.defaults = tank_params(H, 0.1);

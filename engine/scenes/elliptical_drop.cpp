@@ -84,6 +84,7 @@ SPH_SCENE(80, elliptical_drop_scene) {
     const double h = effective_eta(prm, 2) * spacing;
     Particles p = make_particles(prm, s.dim, pts.size());
     const bool pressurised = v.at("init_pressure") != 0.0;
+    const double lattice = random ? 1.0 : lattice_density(prm, 2);  // DFSPH: the lattice's kernel sum is rho0
     for (std::size_t i = 0; i < pts.size(); ++i) {
       p.x[0][i] = pts[i].x;
       p.x[1][i] = pts[i].y;
@@ -94,7 +95,8 @@ SPH_SCENE(80, elliptical_drop_scene) {
       const double r2 = pts[i].x * pts[i].x + pts[i].y * pts[i].y;
       const double P = pressurised ? 0.5 * rho0 * A0 * A0 * std::max(0.0, 1.0 - r2) : 0.0;
       const double rho = prm.physics.eos == EosType::Tait ? eos::tait_density(P + prm.liquid.p0, prm.liquid) : rho0;
-      p[Field::Mass][i] = rho * area;
+      p[Field::Mass][i] = rho * area / lattice;
+      if (p.has(Field::DfsphKappa)) p[Field::DfsphKappa][i] = P / rho0;  // DFSPH's warm start, P/rho
       p[Field::H][i] = h;
       if (p.has(Field::Density)) p[Field::Density][i] = rho;
     }

@@ -36,7 +36,7 @@ SPH_SCENE(111, hydrostatic_tank_3d_scene) {
   SceneSpec s = scene_head("hydrostatic_tank_3d", "free-surface liquids (seed 001)",
                            "water at rest in a square 3D tank under gravity along -z; pressure against rho0 g (H - z)", 3,
                            UnitSystem::si());
-  s.allow(Slot::Eos, {"tait"});
+  s.allow(Slot::Eos, {"tait", "dfsph"});
   s.allow(Slot::Walls, {"dummy"});
   hydrostatic_tank_head(s, 0.5, 0.05, 0.5, "tank width and length [m]", 2);
   s.build = [](const Params& prm, const SceneValues& v) {

@@ -44,20 +44,38 @@ void add_tank_walls(LiquidLayout& out, double L, double H, double dx, WallType t
     }
 }
 
+double lattice_density(const Params& prm, int dim) {
+  if (prm.physics.eos != EosType::Dfsph) return 1.0;
+  const Kernel K(prm.kernel.type, dim);
+  const double h = effective_eta(prm, dim), R = K.support() * h;  // in units of dx
+  const int n = static_cast<int>(std::ceil(R));
+  double sum = 0.0;
+  for (int i = -n; i <= n; ++i)
+    for (int j = -n; j <= n; ++j)
+      for (int k = dim == 3 ? -n : 0; k <= (dim == 3 ? n : 0); ++k) {
+        const double r = std::sqrt(static_cast<double>(i * i + j * j + k * k));
+        if (r < R) sum += K.W(r, h);
+      }
+  return sum;
+}
+
 Particles make_liquid_3d(const Params& prm, const LiquidLayout& layout, Vec3 a, double surface) {
   const std::size_t nf = layout.fluid.size(), n = nf + layout.walls.size();
   Particles p = make_particles(prm, 3, n);
   const LiquidParams& l = prm.liquid;
   const double g = -prm.body.gz, vol = a.x * a.y * a.z;
   const double h = effective_eta(prm, 3) * (a.x == a.y && a.y == a.z ? a.x : std::cbrt(vol));  // a cubic lattice's dx exactly
+  const double lattice = lattice_density(prm, 3);
   for (std::size_t k = 0; k < n; ++k) {
     const bool wall = k >= nf;
     const Vec3 x = wall ? layout.walls[k - nf] : layout.fluid[k];
     p.x[0][k] = x.x;
     p.x[1][k] = x.y;
     p.x[2][k] = x.z;
-    const double rho = wall ? l.rho0 : eos::tait_density(l.rho0 * g * std::max(0.0, surface - x.z) + l.p0, l);
-    p[Field::Mass][k] = rho * vol;
+    const bool tait = prm.physics.eos == EosType::Tait;
+    const double rho = wall || !tait ? l.rho0 : eos::tait_density(l.rho0 * g * std::max(0.0, surface - x.z) + l.p0, l);
+    if (!wall && p.has(Field::DfsphKappa)) p[Field::DfsphKappa][k] = g * std::max(0.0, surface - x.z);  // P/rho0
+    p[Field::Mass][k] = rho * vol / lattice;
     p[Field::H][k] = h;
     if (p.has(Field::Density)) p[Field::Density][k] = rho;
     p.kind[k] = static_cast<std::uint8_t>(wall ? Kind::Wall : Kind::Fluid);
@@ -116,6 +134,7 @@ Particles make_liquid(const Params& prm, const LiquidLayout& layout, double dx, 
   const LiquidParams& l = prm.liquid;
   const double h = effective_eta(prm, 2) * dx, area = dx * dx;
   const bool tait = prm.physics.eos == EosType::Tait;
+  const double lattice = lattice_density(prm, 2);
   for (std::size_t k = 0; k < nf + nw; ++k) {
     const bool wall = k >= nf;
     const Vec3 x = wall ? layout.walls[k - nf] : layout.fluid[k];
@@ -123,7 +142,9 @@ Particles make_liquid(const Params& prm, const LiquidLayout& layout, double dx, 
     p.x[1][k] = x.y;
     double rho = l.rho0;
     if (!wall && tait && g > 0.0) rho = eos::tait_density(l.rho0 * g * std::max(0.0, surface - x.y) + l.p0, l);
-    p[Field::Mass][k] = rho * area;
+    // DFSPH starts from the hydrostatic pressure as its warm start, kappa = P/rho0 = g depth
+    if (!wall && p.has(Field::DfsphKappa)) p[Field::DfsphKappa][k] = g * std::max(0.0, surface - x.y);
+    p[Field::Mass][k] = rho * area / lattice;
     p[Field::H][k] = h;
     if (p.has(Field::Density)) p[Field::Density][k] = rho;
     p.kind[k] = static_cast<std::uint8_t>(wall ? Kind::Wall : Kind::Fluid);
@@ -157,7 +178,7 @@ void hydrostatic_tank_head(SceneSpec& s, double size, double dx, double t_end, c
 
 SceneSpec liquid_scene(std::string name, std::string description, std::vector<std::string> walls) {
   SceneSpec s = scene_head(std::move(name), "free-surface liquids (seed 001)", std::move(description), 2, UnitSystem::si());
-  s.allow(Slot::Eos, {"tait"});
+  s.allow(Slot::Eos, {"tait", "dfsph"});
   s.allow(Slot::Walls, std::move(walls));
   return s;
 }

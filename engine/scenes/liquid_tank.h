@@ -33,6 +33,11 @@ void add_wall_line(LiquidLayout& out, Vec3 a, Vec3 b, double ds);
 /// Dummy layers needed to fill a kernel's support below a wall: ceil(support * eta).
 int dummy_layers(const Params& prm, int dim);
 
+/// DFSPH (physics.eos = dfsph) holds the summation density at rho0: the kernel sum of the lattice, rho0
+/// dx^d sum W, is rho0 times this factor (M4, h = 1.3 dx: 0.99995 in 2D, 0.99726 in 3D), and the masses
+/// are divided by it. 1 for the other equations of state (their masses stay rho dx^d).
+double lattice_density(const Params& prm, int dim);
+
 /// The particles: fluid first (rho from a hydrostatic column of depth `surface - y` under gravity g if
 /// g > 0, else rho0; mass rho dx^2), then walls (rho0, mass rho0 dx^2), every h = eta dx.
 Particles make_liquid(const Params& prm, const LiquidLayout& layout, double dx, double surface, double g);

@@ -15,4 +15,12 @@ struct DensityStats {
   double mean_neighbours = 0.0;    ///< mean count of j with r < support h_i (self included)
 };
 
+/// The last step's pressure solves of an incompressible liquid (DFSPH; Stage::project).
+struct ProjectionStats {
+  int density_iterations = 0;     ///< iterations of the constant-density solve
+  int divergence_iterations = 0;  ///< iterations of the divergence-free solve
+  double density_error = 0.0;     ///< mean predicted compression (rho* - rho0)/rho0 at the solve's end [dimensionless]
+  double density_error_max = 0.0; ///< largest predicted compression of one particle [dimensionless]
+};
+
 }  // namespace sph

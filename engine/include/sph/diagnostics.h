@@ -26,6 +26,11 @@ struct Diagnostics {
   double neighbours_mean = 0.0;
   std::size_t correction_fallbacks = 0;  ///< particles whose gradient correction fell back to L = I
   std::int64_t updates = 0;  ///< particle evaluations so far: with individual time steps, the active ones
+  // DFSPH (physics.eos = dfsph; 0 otherwise), of the last step:
+  int dfsph_iter = 0;            ///< iterations of the constant-density solve
+  int dfsph_div_iter = 0;        ///< iterations of the divergence-free solve
+  double dfsph_error = 0.0;      ///< mean predicted compression (rho - rho0)/rho0 after the solve [dimensionless]
+  double dfsph_error_max = 0.0;  ///< largest predicted compression of one particle [dimensionless]
 };
 
 /// CSV header line and row for diagnostics.csv.

@@ -38,6 +38,8 @@ enum class Field : std::uint8_t {
   ViscAlpha,   ///< artificial viscosity alpha of the particle (visc.switch) [dimensionless]
   GravZeta,    ///< zeta/Omega of kernel-softened gravity's grad-h term (Price & Monaghan 2007) [length^(d-1)]
   StepLevel,   ///< individual time steps: the level k of the particle's step, dt = block / 2^k [dimensionless]
+  DfsphKappa,  ///< DFSPH: the density solve's P/rho of the last step, its warm start [length^2/time^2]
+  DfsphKappaV, ///< DFSPH: the divergence solve's dt P/rho of the last step, its warm start [length^2/time]
   Count
 };
 
@@ -144,6 +146,8 @@ constexpr std::array<FieldInfo, kFieldCount> kFieldInfo{{
     {"alpha", "viscosity alpha (switch)", 0, true, true},
     {"zeta", "gravity grad-h term zeta/Omega", 0, false, false},
     {"level", "time-step level k: dt = block / 2^k", 0, true, true},
+    {"kappa", "DFSPH density solve P/rho", 0, false, false},
+    {"kappa_v", "DFSPH divergence solve P/rho", 0, false, false},
 }};
 
 inline const FieldInfo& info(Field f) { return kFieldInfo[index(f)]; }

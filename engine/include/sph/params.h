@@ -65,13 +65,20 @@ struct GasParams {
   bool operator==(const GasParams&) const = default;
 };
 
-/// Weakly compressible liquid, Tait/Cole EOS (physics.eos = tait; seed 001 eq. 3).
+/// Liquids: weakly compressible by the Tait/Cole EOS (physics.eos = tait; seed 001 eq. 3), or
+/// incompressible by DFSPH's pressure solves (physics.eos = dfsph; Bender & Koschier 2017).
 struct LiquidParams {
   double rho0 = 1000.0;  ///< reference density [kg/m^d]
   double c0 = 1414.2135623730951;  ///< sound speed at rho0 [m/s]; B = rho0 c0^2 / gamma
   double gamma = 7.0;    ///< Tait exponent (7 for water) [dimensionless]; not the gas gamma
   double p0 = 0.0;       ///< background pressure added to P [Pa]
   double p_min = -1e300; ///< floor of P [Pa]: a liquid cannot sustain much tension (cavitation near -1 atm)
+  /// DFSPH: the constant-density solve iterates until the mean compression (rho* - rho0)/rho0 over the
+  /// fluid is at most this [dimensionless] (Bender & Koschier 2017: 0.01%-0.1%)
+  double dfsph_eta = 5e-4;
+  /// DFSPH: the divergence solve iterates until the mean dt (Drho/Dt)/rho0 is at most this [dimensionless]
+  double dfsph_eta_div = 1e-3;
+  int dfsph_max_iter = 1000;  ///< DFSPH: iteration cap of each solve (reaching it warns) [iterations]
   bool operator==(const LiquidParams&) const = default;
 };
 

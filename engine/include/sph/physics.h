@@ -29,6 +29,9 @@ enum class EosType {
   Tait,        ///< P = B [(rho/rho0)^gamma - 1] + p0, B = rho0 c0^2/gamma (seed 001 eq. 3; Cole 1948)
   Isothermal,  ///< P = c_s^2 rho (seed 003 eq. 3.72 with n -> infinity)
   Polytropic,  ///< P = K rho^gamma, gamma = 1 + 1/n (seed 003 eq. 3.72)
+  /// Incompressible: no EOS; the pressure is solved for at every step so that the density stays rho0
+  /// and the velocity divergence-free (DFSPH, Bender & Koschier 2017, IEEE TVCG 23, 1193; physics/dfsph_solver.h)
+  Dfsph,
 };
 /// Momentum (and continuity) discretisation.
 enum class ForceType {
@@ -103,6 +106,9 @@ struct Physics {
   bool set(Slot s, std::string_view option);
   /// Empty if the combination makes sense; otherwise one message naming both slots involved.
   std::string validate() const;
+
+ private:
+  std::string validate_dfsph() const;  ///< the slots the incompressible solver needs (eos = dfsph)
 };
 
 /// Key (without "physics."), description and option names of a slot, in declaration order.

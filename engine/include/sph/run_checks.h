@@ -57,6 +57,8 @@ class RunChecks {
   void check_domain(const Particles& p, const Domain& d, std::int64_t step, double t);
   /// Warns when the h solve did not converge for some particles.
   void check_h_solve(const DensityStats& d, std::int64_t step, double t);
+  /// DFSPH: a pressure solve that hit its iteration cap (the density error is above its tolerance).
+  void check_projection(const ProjectionStats& s, const LiquidParams& l, std::int64_t step, double t);
   /// Throws DivergedError when E_tot has grown far beyond its initial scale (a finite blow-up); warns
   /// when a scene that conserves energy drifts beyond its SceneSpec::energy_bound. `diagnostics` is
   /// called only on the steps that check (with `now`, this one: an output of a gravity scene).

@@ -125,8 +125,13 @@ class World {
   void check_step();
   PhaseSpace phase_space();
   void advance(double dt_max);  ///< the step itself (step() chooses its team)
+  /// The next step's length: the stages' limit, at most dt_max, checked (RunChecks::check_dt) [time].
+  double step_length(double dt_max);
+  /// After a step of length dt: boundaries, time, step count, the stages' after-step actions, the checks.
+  void end_step(double dt);
   /// The step with individual time steps (time.levels > 1): one sub-step of the block (block_steps.h).
   void advance_block(double dt_max);
+  void advance_projected(double dt_max);  ///< the step of a pressure solve (Stage::projects; world_projected.cpp)
   /// Every fluid particle's wanted dt: cfl min(its stage limits, sqrt(h/|a|)) [time].
   void wanted_steps(std::vector<double>& want);
   /// The particle arrays of a checkpoint, checked against this world (world_state.cpp).

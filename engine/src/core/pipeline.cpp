@@ -18,9 +18,11 @@ Pipeline::Pipeline(const Params& prm, int dim) {
     case EosType::Tait: add(make_eos_tait()); break;
     case EosType::Isothermal: add(make_eos_isothermal()); break;
     case EosType::Polytropic: add(make_eos_polytropic()); break;
+    case EosType::Dfsph: add(make_eos_dfsph()); break;
     case EosType::None: break;
   }
-  if (ph.walls == WallType::Dummy) add(make_walls_dummy());
+  // DFSPH's walls are in its sums at rest; their pressure is its solve's, not an extrapolated Tait one
+  if (ph.walls == WallType::Dummy && ph.eos != EosType::Dfsph) add(make_walls_dummy());
   if (ph.corrected()) add(make_gradient_correction(dim));
   if (ph.force == ForceType::Corrected && ph.viscosity == ViscType::Laplacian) add(make_velocity_gradient(dim));
   if (ph.xsph == Toggle::On) add(make_xsph());
@@ -56,6 +58,7 @@ Pipeline::Pipeline(const Params& prm, int dim) {
     sets_a_ = sets_a_ || s->sets_acceleration();
     uses_neighbours_ = uses_neighbours_ || s->uses_neighbours();
     exact_lists_ = exact_lists_ || s->exact_lists();
+    if (s->projects()) projector_ = s.get();
   }
   drifts_ = ph.xsph == Toggle::On || ph.fpm == FpmType::BurgersUpwind;
 }

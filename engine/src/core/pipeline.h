@@ -25,11 +25,14 @@ class Pipeline {
   bool uses_neighbours() const { return uses_neighbours_; }
   /// Some stage reads every entry of its lists without testing the distance (Stage::exact_lists).
   bool exact_lists() const { return exact_lists_; }
+  /// The stage that steps the scene by a pressure solve (Stage::projects), or null.
+  Stage* projector() const { return projector_; }
 
  private:
   std::vector<std::unique_ptr<Stage>> stages_;
   FieldSet fields_;
   std::vector<EvolvedPair> evolved_;
+  Stage* projector_ = nullptr;
   bool sets_a_ = false, drifts_ = false, uses_neighbours_ = false, exact_lists_ = false;
 };
 

@@ -26,6 +26,7 @@ namespace sph {
 struct EvalStats {
   DensityStats density;                 ///< the summation density / h solve, or neighbour counts
   std::size_t correction_fallbacks = 0; ///< particles whose gradient correction fell back to L = I
+  ProjectionStats projection;           ///< DFSPH's solves (zero without)
 };
 
 /// What a stage sees: constant configuration, the particles and the neighbour lists of this evaluation.
@@ -113,6 +114,12 @@ class Stage {
     if (g < kNoLimit)
       for (double& d : dt) d = d < g ? d : g;
   }
+  /// True for a pressure solve (DFSPH): the world then steps by project() instead of the integrator.
+  virtual bool projects() const { return false; }
+  /// One step of length dt [time] from the rates of the current state (non-pressure accelerations in a):
+  /// the stage sets the fluid's velocities of the new step, with the pressure that keeps the density;
+  /// the world then moves the particles x += dt v (symplectic Euler).
+  virtual void project(StageContext&, double /*dt*/) {}
   /// Potential energy of a conservative force [energy].
   virtual double potential(const StageContext&) const { return 0.0; }
   /// Internal energy the stage stores (an EOS) [energy].

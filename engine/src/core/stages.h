@@ -19,6 +19,7 @@ std::unique_ptr<Stage> make_eos_ideal_gas();
 std::unique_ptr<Stage> make_eos_tait();
 std::unique_ptr<Stage> make_eos_isothermal();
 std::unique_ptr<Stage> make_eos_polytropic();
+std::unique_ptr<Stage> make_eos_dfsph();  // the incompressible pressure solve (physics/dfsph_solver.h)
 std::unique_ptr<Stage> make_walls_dummy();
 std::unique_ptr<Stage> make_gradient_correction(int dim);
 std::unique_ptr<Stage> make_velocity_gradient(int dim);

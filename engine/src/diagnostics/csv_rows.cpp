@@ -19,7 +19,7 @@ void field(std::string& s, const std::string& v) {
 
 std::string diagnostics_csv_header() {
   return "step,t,dt,E_kin,E_int,E_pot,E_tot,px,py,pz,Lx,Ly,Lz,v_max,h_iter_mean,h_iter_max,h_not_converged,"
-         "neighbours_mean,correction_fallbacks,updates";
+         "neighbours_mean,correction_fallbacks,updates,dfsph_iter,dfsph_div_iter,dfsph_error,dfsph_error_max";
 }
 
 std::string diagnostics_csv_row(const Diagnostics& d) {
@@ -32,6 +32,10 @@ std::string diagnostics_csv_row(const Diagnostics& d) {
   field(s, fmt(d.neighbours_mean));
   field(s, std::to_string(d.correction_fallbacks));
   field(s, std::to_string(d.updates));
+  field(s, std::to_string(d.dfsph_iter));
+  field(s, std::to_string(d.dfsph_div_iter));
+  field(s, fmt(d.dfsph_error));
+  field(s, fmt(d.dfsph_error_max));
   return s;
 }
 

@@ -31,6 +31,9 @@ std::string block_steps_refusal(const Params& p) {
   if (ph.xsph == Toggle::On || ph.fpm != FpmType::None)
     return key + " does not yet drift particles with a correction velocity (physics.xsph, physics.fpm): set "
                  "time.levels = 1";
+  if (ph.eos == EosType::Dfsph)
+    return key + " steps particles on their own, but physics.eos = dfsph solves one pressure for all of them: set "
+                 "time.levels = 1";
   if (ph.visc_switch != ViscSwitch::None)
     return key + " does not yet give the viscosity switch each particle's own step (visc.switch = " +
            to_string(ph.visc_switch) + "): set visc.switch = none, or time.levels = 1";

@@ -21,6 +21,12 @@ const Owner kDamping{"the damping body force", Slot::BodyForce,
 const Owner kIsothermal{"the isothermal equation of state", Slot::Eos,
                         [](const Params& p) { return p.physics.eos == EosType::Isothermal; }};
 const Owner kTait{"the Tait equation of state", Slot::Eos, [](const Params& p) { return p.physics.eos == EosType::Tait; }};
+const Owner kDfsph{"the incompressible pressure solve (DFSPH)", Slot::Eos,
+                   [](const Params& p) { return p.physics.eos == EosType::Dfsph; }};
+const Owner kLiquid{"the liquid (Tait or DFSPH)", Slot::Eos,
+                    [](const Params& p) { return p.physics.eos == EosType::Tait || p.physics.eos == EosType::Dfsph; }};
+const Owner kIntegrated{"the time integrator (DFSPH steps by its own symplectic Euler)", Slot::Eos,
+                        [](const Params& p) { return p.physics.eos != EosType::Dfsph; }};
 const Owner kMonaghan{"the Monaghan viscosity stage", Slot::Viscosity,
                       [](const Params& p) { return p.physics.viscosity == ViscType::Monaghan; }};
 const Owner kConstantAlpha{"the Monaghan viscosity with a constant or Balsara-limited alpha", Slot::Viscosity,

@@ -63,8 +63,8 @@ void add_eos(std::vector<ParamInfo>& t) {
   t.push_back(real({"gas.K", "pressure/density^gamma", "polytropic constant of P = K rho^gamma (seed 003 eq. 3.72)",
                     "", kPolytropic, false},
                    [](Params& p) -> double& { return p.gas.K; }, 1e-12, 1e12));
-  t.push_back(real({"liquid.rho0", "mass/length^d", "reference density of the Tait EOS (seed 001 eq. 3)", "",
-                    kTait, false},
+  t.push_back(real({"liquid.rho0", "mass/length^d", "reference density of the liquid (Tait: seed 001 eq. 3; DFSPH)", "",
+                    kLiquid, false},
                    [](Params& p) -> double& { return p.liquid.rho0; }, 1e-9, 1e9));
   t.push_back(real({"liquid.c0", "length/time",
                     "sound speed at rho0: B = rho0 c0^2/gamma (seed 001 §2: c^2 = gamma k/rho0 with k = B)", "",
@@ -78,6 +78,15 @@ void add_eos(std::vector<ParamInfo>& t) {
                     "floor of the Tait pressure: no more tension than this (water cavitates near -1e5 Pa gauge)", "",
                     kTait, true},
                    [](Params& p) -> double& { return p.liquid.p_min; }, -1e300, 1e12));
+  t.push_back(real({"liquid.dfsph_eta", "dimensionless",
+                    "DFSPH: the density solve stops when the mean compression (rho* - rho0)/rho0 is at most this", "",
+                    kDfsph, true},
+                   [](Params& p) -> double& { return p.liquid.dfsph_eta; }, 1e-7, 0.1));
+  t.push_back(real({"liquid.dfsph_eta_div", "dimensionless",
+                    "DFSPH: the divergence solve stops when the mean dt (Drho/Dt)/rho0 is at most this", "", kDfsph, true},
+                   [](Params& p) -> double& { return p.liquid.dfsph_eta_div; }, 1e-7, 0.1));
+  t.push_back(integer({"liquid.dfsph_max_iter", "iterations", "DFSPH: iteration cap of each pressure solve", "", kDfsph, true},
+                      [](Params& p) -> int& { return p.liquid.dfsph_max_iter; }, 1, 10000));
 }
 
 /// The artificial and physical viscosities and the viscosity switch.
@@ -204,7 +213,7 @@ void add_fpm_walls_corrections(std::vector<ParamInfo>& t) {
 void add_time(std::vector<ParamInfo>& t) {
   using I = IntegratorType;
   t.push_back(choice<I>({"time.integrator", "choice", "time integrator (seed 000 App. A; seed 001 eqs. 56-59)",
-                         "integrator"},
+                         "integrator", kIntegrated},
                         [](Params& p) -> I& { return p.time.integrator; },
                         {I::Euler, I::RK4, I::Leapfrog, I::PredictorCorrector}));
   t.push_back(real({"time.dt", "time", "fixed timestep; 0 = adaptive from cfl", "dt"},

@@ -32,7 +32,8 @@ const Names<DensityMode> kDensity{{{"none", DensityMode::None}, {"summation", De
                                    {"continuity", DensityMode::Continuity}, {"volume", DensityMode::Volume}}};
 const Names<HMode> kSmoothing{{{"variable", HMode::Variable}, {"fixed", HMode::Fixed}, {"evolved", HMode::Evolved}}};
 const Names<EosType> kEos{{{"none", EosType::None}, {"ideal_gas", EosType::IdealGas}, {"tait", EosType::Tait},
-                           {"isothermal", EosType::Isothermal}, {"polytropic", EosType::Polytropic}}};
+                           {"isothermal", EosType::Isothermal}, {"polytropic", EosType::Polytropic},
+                           {"dfsph", EosType::Dfsph}}};
 const Names<ForceType> kForce{{{"none", ForceType::None}, {"standard", ForceType::Standard},
                                {"corrected", ForceType::Corrected}, {"standard_corrected", ForceType::StandardCorrected}}};
 const Names<ViscType> kVisc{{{"none", ViscType::None}, {"monaghan", ViscType::Monaghan}, {"laplacian", ViscType::Laplacian}}};
@@ -84,7 +85,7 @@ const std::array<SlotInfo, kSlotCount>& slot_table() {
        kSmoothing.options(), true},
       {Slot::Eos, "eos",
        "equation of state: ideal gas (seed 000 eq. 3.3.23), Tait/Cole (seed 001 eq. 3), isothermal, polytropic P = K rho^gamma "
-       "(seed 003 eq. 3.72)",
+       "(seed 003 eq. 3.72), or dfsph: an incompressible liquid whose pressure is solved for (Bender & Koschier 2017)",
        kEos.options(), false},
       {Slot::Force, "force",
        "momentum equation: standard (seed 001 eq. 44), corrected (eqs. 48-52), standard-corrected (eqs. 53-55)",
@@ -168,10 +169,25 @@ std::string Physics::validate() const {
     return is(Slot::Conduction) + " conducts internal energy, but " + is(Slot::Energy);
   if (corrected() && smoothing == HMode::Variable)
     return is(Slot::Force) + " has no grad-h terms, but " + is(Slot::Smoothing) + " (choose fixed or evolved)";
-  if (walls == WallType::Dummy && eos != EosType::Tait)
+  if (walls == WallType::Dummy && eos != EosType::Tait && eos != EosType::Dfsph)
     return is(Slot::Walls) + " inverts the Tait equation for the wall density, but " + is(Slot::Eos);
+  if (eos == EosType::Dfsph) return validate_dfsph();
   if (walls == WallType::Dummy && force == ForceType::None)
     return is(Slot::Walls) + " acts through the pressure force, but " + is(Slot::Force);
+  return {};
+}
+
+std::string Physics::validate_dfsph() const {
+  auto is = [&](Slot s) { return "physics." + std::string(slot_info(s).key) + " = " + get(s); };
+  const std::string d = is(Slot::Eos) + " ";
+  if (density != DensityMode::Summation) return d + "solves for the summation density, but " + is(Slot::Density);
+  if (smoothing != HMode::Fixed) return d + "keeps h fixed, but " + is(Slot::Smoothing);
+  if (force != ForceType::Standard) return d + "adds its pressure to the standard form's other forces, but " + is(Slot::Force);
+  if (viscosity == ViscType::Monaghan)
+    return d + "has no sound speed for the Monaghan viscosity, but " + is(Slot::Viscosity) + " (choose laplacian or none)";
+  if (xsph == Toggle::On) return d + "moves particles with v, but " + is(Slot::Xsph);
+  if (walls == WallType::LennardJones) return d + "needs walls in its sums, but " + is(Slot::Walls) + " (choose dummy)";
+  if (gravity != GravityType::None) return d + "is a liquid solver, but " + is(Slot::Gravity);
   return {};
 }
 

@@ -52,6 +52,11 @@ Diagnostics Report::diagnostics() const {
   d.neighbours_mean = ds.mean_neighbours;
   d.correction_fallbacks = in_.stats.correction_fallbacks;
   d.updates = in_.updates;
+  const ProjectionStats& ps = in_.stats.projection;
+  d.dfsph_iter = ps.density_iterations;
+  d.dfsph_div_iter = ps.divergence_iterations;
+  d.dfsph_error = ps.density_error;
+  d.dfsph_error_max = ps.density_error_max;
   return d;
 }
 

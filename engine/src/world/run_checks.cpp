@@ -122,6 +122,16 @@ void RunChecks::check_h_solve(const DensityStats& d, std::int64_t step, double t
   warn("h_solve", d.first_not_converged, what, step, t);
 }
 
+void RunChecks::check_projection(const ProjectionStats& s, const LiquidParams& l, std::int64_t step, double t) {
+  if (s.density_iterations < l.dfsph_max_iter && s.divergence_iterations < l.dfsph_max_iter) return;
+  char what[240];
+  std::snprintf(what, sizeof what,
+                "a DFSPH pressure solve stopped at liquid.dfsph_max_iter = %d iterations with the mean density error "
+                "at %.3g (liquid.dfsph_eta = %.3g): the liquid is compressed; raise the cap or lower time.cfl",
+                l.dfsph_max_iter, s.density_error, l.dfsph_eta);
+  warn("dfsph", -1, what, step, t);
+}
+
 void RunChecks::check_energy(const RunConfig& cfg, const std::function<Diagnostics()>& diagnostics, const Particles& p,
                              std::int64_t step, double t, bool now) {
   // Every stage conserves or dissipates E_kin + E_int + E_pot (the corrected forms to truncation error),

@@ -154,12 +154,22 @@ void World::step(double dt_max) {
 void World::advance(double dt_max) {
   if (step_ > 0 && step_ % kReorderEvery == 0) reorder();
   if (block_) return advance_block(dt_max);
-  const double dt_free = next_dt();
-  double dt = std::min(dt_free, dt_max);
-  checks_.check_dt(dt, dt_free, cfg_.params.time.dt <= 0.0, p_, step_, t_);
+  if (pipeline_->projector()) return advance_projected(dt_max);
+  const double dt = step_length(dt_max);
   PhaseSpace s = phase_space();
   const double t0 = t_;
   current_ = integrator_->step(s, [this, t0](double offset) { evaluate(t0 + offset); }, dt, current_);
+  end_step(dt);
+}
+
+double World::step_length(double dt_max) {
+  const double dt_free = next_dt();
+  const double dt = std::min(dt_free, dt_max);
+  checks_.check_dt(dt, dt_free, cfg_.params.time.dt <= 0.0, p_, step_, t_);
+  return dt;
+}
+
+void World::end_step(double dt) {
   bound();
   t_ += dt;
   dt_last_ = dt;

@@ -1,0 +1,71 @@
+// DFSPH's two pressure solves (Bender & Koschier 2017, IEEE TVCG 23, 1193, Algorithms 2 and 3) over the
+// fluid of one state: pair gradients and the stiffness factors alpha once, then Jacobi iterations on
+// the velocities. With g_ab = m_b grad W_ab (h_ab = (h_a + h_b)/2) and kappa = P/rho [length^2/time^2]:
+//   alpha_a = rho_a / (|sum_b g_ab|^2 + sum_{b fluid} |g_ab|^2)                      (their eq. 11)
+//   density:    source_a = rho_a + dt sum_b (v_a - v_b) . g_ab - rho0                  (predicted compression)
+//   divergence: source_a = dt sum_b (v_a - v_b) . g_ab                                  (dt Drho/Dt)
+//   kappa_a <- max(0, kappa_a + 1/2 source_a alpha_a / dt^2),
+//   v_a -= dt sum_b (kappa_a/rho_a + kappa_b/rho_b) g_ab for the change of kappa.
+// kappa >= 0 (projected Jacobi: a liquid takes no tension), so a free surface's particles, whose
+// summation density is below rho0, stay free; a solve ends when the mean of the compression (and of the
+// expansion where kappa > 0) over the fluid is below its tolerance. Wall particles take the pressure of
+// the fluid around them, as Adami et al.'s dummy particles (2012, JCP 231, 7057, eq. 27):
+//   kappa_w = max(0, sum_f kappa_f W_wf / sum_f W_wf + g . sum_f (x_w - x_f) W_wf / sum_f W_wf),
+// the second term (the hydrostatic one) in the density solve only. The step's kappa is the next step's
+// warm start (see finish()), and P = rho kappa is the step's pressure. Gathers in list order:
+// the same result for any thread count.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "core/stage.h"
+
+namespace sph {
+
+class DfsphSolver {
+ public:
+  /// Pairs within the support, alpha and the walls' weights for the current positions and densities.
+  void prepare(const StageContext& c);
+  /// Makes the velocity field divergence-free where the kernel is full (Algorithm 3). Returns iterations.
+  int divergence(StageContext& c, double dt);
+  /// Corrects the predicted velocities so that the step keeps rho0 (Algorithm 2). Returns iterations;
+  /// the mean and largest error at its end in `stats`.
+  int density(StageContext& c, double dt, ProjectionStats& stats);
+  /// After both solves: P = rho kappa [pressure] (the density solve's: kappa_v only removes the velocity
+  /// divergence the step left, a correction near zero in a steady flow but noisy), and the divergence solve's warm start kept
+  /// as dt kappa_v: its pressure removes a velocity divergence within one step, so it scales as 1/dt
+  /// (a warm start after a sliver of a step, e.g. one landing on an output time, would otherwise kick
+  /// the next step by the ratio of the steps).
+  void finish(StageContext& c, double dt) const;
+
+ private:
+  /// Projected Jacobi from the warm start `total` (applied first) until the mean error is at most tol;
+  /// source(a) is signed [density], -inf: no pressure at a. `hydrostatic`: the walls' g term.
+  template <class Source>
+  int solve(StageContext& c, std::vector<double>& total, double dt, double tol, bool hydrostatic, Source source);
+  /// The walls' fluid neighbours, weights and hydrostatic terms (dfsph_walls.cpp).
+  void prepare_walls(const StageContext& c);
+  /// The walls' kappa from the fluid's `k` (Adami's extrapolation), into `out` (one per wall particle).
+  void wall_kappa(const std::vector<double>& k, bool hydrostatic, std::vector<double>& out) const;
+  /// v_a -= dt sum_b (k_a/rho_a + k_b/rho_b) g_ab for every fluid a, k_b = kw[b - fluid] for a wall.
+  void apply(StageContext& c, const std::vector<double>& k, const std::vector<double>& kw, double dt) const;
+  /// sum_b (v_a - v_b) . g_ab of fluid a (Drho/Dt) [density/time].
+  double divergence_of(const StageContext& c, std::size_t a) const;
+
+  std::vector<std::size_t> start_;     ///< pairs of fluid a: [start_[a], start_[a + 1])
+  std::vector<std::uint32_t> src_;     ///< the neighbour's real index (a ghost's source)
+  std::vector<std::uint8_t> flip_;     ///< a ghost's mirror bits: its velocity components that flip
+  std::vector<std::uint8_t> wall_;     ///< 1: a wall particle (at rest)
+  std::vector<double> gx_, gy_, gz_;   ///< g_ab = m_b grad W_ab [mass/length^(d+1)]
+  std::vector<double> alpha_;          ///< per fluid particle [length^2/density]
+  std::vector<std::uint8_t> full_;     ///< 1: the kernel is full (the divergence solve constrains it)
+  std::vector<std::size_t> wstart_;    ///< fluid neighbours of wall w: [wstart_[w], wstart_[w + 1])
+  std::vector<std::uint32_t> wsrc_;    ///< that fluid particle (a ghost's source)
+  std::vector<double> wweight_;        ///< W_wf / sum_f W_wf [dimensionless]
+  std::vector<double> whyd_;           ///< g . sum_f (x_w - x_f) W_wf / sum_f W_wf per wall [length^2/time^2]
+  std::vector<double> kappa_, err_, kw_, kw_new_;  ///< per-iteration scratch
+  bool threaded_ = false;                           ///< loops in a thread team (core/parallel.h)
+  double last_mean_ = 0.0, last_max_ = 0.0;         ///< the last solve's mean and largest error [dimensionless]
+};
+
+}  // namespace sph

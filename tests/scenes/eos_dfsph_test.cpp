@@ -1,0 +1,99 @@
+// The incompressible liquid (physics.eos = dfsph, assets/scenes/*_dfsph.json) on seed 001's scenes:
+//  - the elliptical drop's major semi-axis follows the incompressible ODE within 1% (measured 0.04% at
+//    dx = 0.025), its energy is kept within 5% without viscosity (+2.4%) and its momentum stays 0;
+//  - the dam break's surge front is within 5% of the nearer measured series for T <= 2.5 (measured 4.5%),
+//    with every step's mean density error within liquid.dfsph_eta = 0.1% (the bound);
+//  - the hydrostatic tank stays at rest and keeps its height, and its bottom rows' pressure is rho0 g
+//    times their depth on average over t = 0.2 ... 1 within 10% (measured 1.06). At a moment it swings
+//    between 0.4 and 2.2 times that: the Jacobi solve barely sees a pressure too low or too high
+//    everywhere, which compresses little within one step; a tighter liquid.dfsph_eta (1e-5: within 4% at
+//    mid-depth, 576 iterations per step) or a Krylov solve would be needed for 1%.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "sph/world.h"
+
+namespace sph {
+namespace {
+
+RunConfig asset(const std::string& name) {
+  return RunConfig::from_file(std::string(SPH_SOURCE_DIR) + "/assets/scenes/" + name + ".json");
+}
+
+TEST(EosDfsph, DropFollowsTheIncompressibleOde) {
+  RunConfig cfg = asset("elliptical_drop_dfsph");
+  cfg.validate();
+  World w(cfg);
+  const double E0 = w.report().diagnostics().E_tot;
+  double worst = 0.0;
+  while (w.time() < cfg.params.time.t_end * (1.0 - 1e-12)) {
+    w.step(cfg.params.time.t_end - w.time());
+    worst = std::max(worst, w.report().diagnostics().dfsph_error);
+  }
+  const Diagnostics d = w.report().diagnostics();
+  const double err_major = w.report().reference_value("err_major");
+  std::printf("drop: err_major %.4f, E %.4g -> %.4g, |P| %.3g, worst mean density error %.3g\n", err_major, E0,
+              d.E_tot, std::hypot(d.P[0], d.P[1]), worst);
+  EXPECT_LT(err_major, 0.01);
+  EXPECT_LT(std::abs(d.E_tot / E0 - 1.0), 0.05);
+  EXPECT_LT(std::hypot(d.P[0], d.P[1]), 1e-8 * std::sqrt(2.0 * E0 * 1000.0 * 3.14));  // mass ~ rho0 pi
+  EXPECT_LE(worst, cfg.params.liquid.dfsph_eta);
+}
+
+TEST(EosDfsph, DamBreakFrontWithinFivePercentAtAMeanDensityErrorBelowOneInAThousand) {
+  RunConfig cfg = asset("dam_break_dfsph");
+  cfg.validate();
+  World w(cfg);
+  const double g = -cfg.params.body.gy, a = 1.0;
+  double worst_front = 0.0, worst_density = 0.0;
+  while (w.time() < 0.6 - 1e-12) {
+    w.step(0.6 - w.time());
+    const double T = w.time() * std::sqrt(2.0 * g / a);
+    const double e = w.report().reference_value("err_data");
+    if (T <= 2.5 && std::isfinite(e)) worst_front = std::max(worst_front, e);
+    worst_density = std::max(worst_density, w.report().diagnostics().dfsph_error);
+  }
+  std::printf("dam break: %lld steps to t = 0.6, front error %.4f, worst mean density error %.3g\n",
+              static_cast<long long>(w.steps()), worst_front, worst_density);
+  EXPECT_LT(worst_front, 0.05);
+  EXPECT_LE(worst_density, 1e-3);
+}
+
+TEST(EosDfsph, TankKeepsItsVolumeAndHoldsTheWeightOfItsWater) {
+  RunConfig cfg = asset("hydrostatic_tank_dfsph");
+  cfg.validate();
+  World w(cfg);
+  const double H = cfg.values.at("depth"), dx = cfg.values.at("dx"), g = -cfg.params.body.gy;
+  double ratio = 0.0, worst_v = 0.0;
+  int samples = 0;
+  for (int k = 1; k <= 100; ++k) {
+    w.advance_to(0.01 * k);
+    worst_v = std::max(worst_v, w.report().diagnostics().v_max);
+    if (k <= 20) continue;  // the start from a lattice settles
+    const Particles& p = w.particles();
+    double sum = 0.0, want = 0.0;
+    for (std::size_t a = 0; a < p.fluid(); ++a)
+      if (p.x[1][a] < 4.0 * dx) {
+        sum += p[Field::Pressure][a];
+        want += cfg.params.liquid.rho0 * g * (H - p.x[1][a]);
+      }
+    ratio += sum / want;
+    ++samples;
+  }
+  ratio /= samples;
+  const Particles& p = w.particles();
+  double ym = 0.0;
+  for (std::size_t a = 0; a < p.fluid(); ++a) ym += p.x[1][a];
+  ym /= static_cast<double>(p.fluid());
+  std::printf("tank: bottom rows' pressure %.4f of rho0 g depth (mean of %d), centre of mass %.5f H, v_max %.3g m/s\n",
+              ratio, samples, ym / H, worst_v);
+  EXPECT_NEAR(ym / H, 0.5, 0.005);  // incompressible: the column keeps its height (Tait: -0.25% at c0)
+  EXPECT_LT(worst_v, 0.2);          // at rest but for the lattice's settling (free fall from rest: 1.4 m/s at 0.1 m)
+  EXPECT_NEAR(ratio, 1.0, 0.1);     // on average the pressure holds the water (momentum); see the note above
+}
+
+}  // namespace
+}  // namespace sph
