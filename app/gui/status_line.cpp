@@ -76,15 +76,16 @@ void status_line(GuiState& s, const FrameStats& stats) {
   std::snprintf(buf, sizeof buf, "|   %.4g steps/s   %.3g particle-steps/s", f->steps_per_second,
                 f->particle_steps_per_second);
   segment(buf, std::nullopt);
-  std::snprintf(buf, sizeof buf, "|   N = %zu   <neighbours> %.1f   h-iterations %.2f (max %d)", snap.count,
-                f->density.mean_neighbours, f->density.mean_iterations, f->density.max_iterations);
-  segment(buf, std::nullopt);
-  if (f->config.params.physics.eos == EosType::Dfsph) {  // the pressure solves of the last step
+  if (f->config.params.physics.eos == EosType::Dfsph) {  // h is fixed: the pressure solves of the last step instead
     const Diagnostics& d = f->diagnostics;
-    std::snprintf(buf, sizeof buf, "|   DFSPH iterations %d + %d (divergence)   density error %.3g%% (max %.3g%%)",
-                  d.dfsph_iter, d.dfsph_div_iter, 100.0 * d.dfsph_error, 100.0 * d.dfsph_error_max);
-    segment(buf, std::nullopt);
+    std::snprintf(buf, sizeof buf, "|   N = %zu   <neighbours> %.1f   DFSPH %d + %d iterations, density error %.2g%% (max %.2g%%)",
+                  snap.count, f->density.mean_neighbours, d.dfsph_iter, d.dfsph_div_iter, 100.0 * d.dfsph_error,
+                  100.0 * d.dfsph_error_max);
+  } else {
+    std::snprintf(buf, sizeof buf, "|   N = %zu   <neighbours> %.1f   h-iterations %.2f (max %d)", snap.count,
+                  f->density.mean_neighbours, f->density.mean_iterations, f->density.max_iterations);
   }
+  segment(buf, std::nullopt);
   std::snprintf(buf, sizeof buf, "|   display %.0f fps (%.0f drawn)", stats.fps(), stats.drawn_fps());
   segment(buf, std::nullopt);
   if (f->record_every > 0.0) {
