@@ -16,8 +16,10 @@ namespace {
 /// out of the divergence solve, as in SPlisHSPlasH (20 of 33 in 3D, 7 of 13 in 2D).
 constexpr double kFullShare = 0.6;
 /// Relaxation of the Jacobi updates: alpha takes the neighbours' kappa equal to a's, which holds for a
-/// smooth pressure but not for a checkerboard one; IISPH (Ihmsen et al. 2014) relaxes by 0.5 too.
-constexpr double kRelax = 0.5;
+/// smooth pressure but not for a checkerboard one, whose growth the relaxation must outweigh. IISPH
+/// (Ihmsen et al. 2014) relaxes by 0.5, enough in 2D; in 3D (some 60 neighbours instead of 20) the
+/// hydrostatic_tank_3d's first solve diverged at 0.5 and converges at 0.3 (0.2, 0.1: slower, no better).
+constexpr double kRelax2d = 0.5, kRelax3d = 0.3;
 /// A solve also iterates until no particle's error exceeds this many times the tolerance on the mean: a
 /// pressure too low everywhere compresses only the bottom rows, which the mean hardly sees (the tank's
 /// pressure swung between 0.4 and 2.2 times the hydrostatic one with the mean alone).
@@ -138,12 +140,13 @@ int DfsphSolver::solve(StageContext& c, std::vector<double>& total, double dt, d
   wall_kappa(total, hydrostatic, kw_);
   apply(c, total, kw_, dt);  // the warm start: the last step's pressure
   kappa_.resize(n); err_.resize(n);
+  const double relax = c.p.dim() == 3 ? kRelax3d : kRelax2d;
   int it = 0;
   for (;; ++it) {
 #pragma omp parallel for schedule(static) if (threaded_)
     for (std::size_t a = 0; a < n; ++a) {
       const double s = source(a);  // signed; -inf: no pressure at a
-      kappa_[a] = std::max(0.0, total[a] + kRelax * s * alpha_[a] / (dt * dt)) - total[a];
+      kappa_[a] = std::max(0.0, total[a] + relax * s * alpha_[a] / (dt * dt)) - total[a];
       // compression, or a pressure where there is none (s < 0 with kappa > 0: a warm start that pushes
       // too hard, e.g. after a short step, would otherwise stay and fling particles apart)
       err_[a] = (total[a] > 0.0 ? std::abs(s) : std::max(0.0, s)) / rho0;

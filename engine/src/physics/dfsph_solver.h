@@ -4,7 +4,7 @@
 //   alpha_a = rho_a / (|sum_b g_ab|^2 + sum_{b fluid} |g_ab|^2)                      (their eq. 11)
 //   density:    source_a = rho_a + dt sum_b (v_a - v_b) . g_ab - rho0                  (predicted compression)
 //   divergence: source_a = dt sum_b (v_a - v_b) . g_ab                                  (dt Drho/Dt)
-//   kappa_a <- max(0, kappa_a + 1/2 source_a alpha_a / dt^2),
+//   kappa_a <- max(0, kappa_a + w source_a alpha_a / dt^2) (w = 1/2 in 2D, 0.3 in 3D: relaxed Jacobi),
 //   v_a -= dt sum_b (kappa_a/rho_a + kappa_b/rho_b) g_ab for the change of kappa.
 // kappa >= 0 (projected Jacobi: a liquid takes no tension), so a free surface's particles, whose
 // summation density is below rho0, stay free; a solve ends when the mean of the compression (and of the
