@@ -68,6 +68,13 @@ SCENES
   check "sedov levels first half" 0 $?
   "$sph" resume "$work/L2" --until 0.02 --quiet 2> /dev/null; check "sedov levels resumed" 0 $?
   ok "sedov levels: every file identical" same "$work/L1" "$work/L2"
+  # DFSPH (its own step, no time.integrator): the warm starts (fields kappa, kappa_v) come back with the checkpoint
+  sets=(--set scene.dx=0.1 --set time.dt_out=0.025)
+  "$sph" run dam_break_dfsph "${sets[@]}" --until 0.1 --threads 1 --quiet --out "$work/D1" 2> /dev/null; check "dam_break_dfsph uninterrupted" 0 $?
+  "$sph" run dam_break_dfsph "${sets[@]}" --until 0.05 --checkpoint-every 0.05 --threads 1 --quiet --out "$work/D2" 2> /dev/null
+  check "dam_break_dfsph first half" 0 $?
+  "$sph" resume "$work/D2" --until 0.1 --quiet 2> /dev/null; check "dam_break_dfsph resumed" 0 $?
+  ok "dam_break_dfsph: every file identical" same "$work/D1" "$work/D2"
   # above the size where loops go parallel (4096): run on 1 thread, resumed on 2, the same files
   sets=(--set scene.n_left=4000 --set time.dt_out=0.005)
   "$sph" run sod "${sets[@]}" --until 0.01 --threads 1 --quiet --out "$work/t1" 2> /dev/null; check "4500 particles, 1 thread" 0 $?

@@ -50,6 +50,8 @@ TEST(Determinism, BitwiseIdenticalWithOneAndTwoThreads) {
                         Case{"tube2d", "scene.n_side", "64", 10},
                         // a 2D liquid: 3200 fluid + 1164 dummy wall particles, corrected gradients, walls
                         Case{"dam_break", "scene.dx", "0.025", 20},
+                        // DFSPH's pressure solves: Jacobi iterations over the pairs, walls at the fluid's pressure
+                        Case{"dam_break_dfsph", "scene.dx", "0.025", 20}, Case{"hydrostatic_tank_dfsph", "scene.dx", "0.02", 20},
                         // self-gravity: a Barnes-Hut tree alone, and SPH with the tree
                         Case{"dust_sphere", "scene.n", "5000", 20}, Case{"evrard", "scene.n", "5000", 17},
                         // two relaxed stars of 2100 (relaxed once, serially: below the thread-team size)
