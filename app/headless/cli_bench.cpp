@@ -42,6 +42,8 @@ std::string short_text(double v) {
 
 /// Kernels are compared where the scene runs SPH sums; N-body and FPM scenes keep their own.
 bool uses_kernels(const RunConfig& cfg) { return cfg.params.physics.density != DensityMode::None; }
+/// DFSPH steps by its own symplectic Euler: --integrators does not apply.
+bool uses_integrators(const RunConfig& cfg) { return cfg.params.physics.eos != EosType::Dfsph; }
 
 std::string csv_text(const std::vector<SceneBench>& all, int threads, bool comment) {
   std::string s = comment ? "# sph bench: error at the study's time against wall time, " + std::to_string(threads) +
@@ -141,11 +143,12 @@ int bench_command(const BenchOptions& opt) {
       if (!uses_kernels(cfg)) kernels = {"-"};  // N-body and FPM scenes: --kernels does not apply
       else if (kernels.empty()) kernels = {"M4", "M6", "wendland_c2"};
       SceneBench b{cfg.scene->name, {}};
+      const std::vector<std::string> steppers = uses_integrators(cfg) ? integrators : std::vector<std::string>{"dfsph"};
       for (const std::string& k : kernels)
-        for (const std::string& integ : integrators) {
+        for (const std::string& integ : steppers) {
           Series se{k, integ, cfg, {}, {}};
           if (uses_kernels(cfg)) se.base.set("kernel.type", k, "--kernels");  // else the kernel is not a parameter
-          se.base.set("time.integrator", integ, "--integrators");
+          if (uses_integrators(cfg)) se.base.set("time.integrator", integ, "--integrators");
           ConvergenceStudy asked;
           asked.values = values;
           se.study = resolve_study(se.base, asked);

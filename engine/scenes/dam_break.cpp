@@ -51,6 +51,8 @@ SPH_SCENE(90, dam_break_scene) {
     return make_dam_break_reference(v.at("a"), v.at("dx"), -prm.body.gy);
   };
   s.error_bounds = {{"err_data", 0.065}};  // measured to t = 0.7: 0.043
+  // `sph converge`/`sph bench`: the front against the nearer series at t = 0.6 (T = 2.66), dx = a/20 ... a/40
+  s.convergence = {"scene.dx", {0.05, 0.1 / 3.0, 0.025}, 0.6, "err_data"};
   s.assumptions = {{"scene.dx / scene.a", 0.0, 0.025, "the error bound was measured at dx = a/40 or finer",
                     [](const Params&, const SceneValues& v) { return v.at("dx") / v.at("a"); }},
                    weakly_compressible("a", 2.0)};

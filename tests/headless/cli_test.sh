@@ -215,6 +215,10 @@ fi
 # a timestep study (kepler's energy error against time.dt): leapfrog is second order, --kernels ignored
 "$sph" bench kepler --values 0.008,0.004 --kernels M6 --integrators leapfrog --out "$work/bk" --quiet; check "bench kepler" 0 $?
 ok "bench kepler: order 2" grep -q "| - / leapfrog | 0.004 | 2 | .* | 1.9[0-9] |" "$work/bk/bench.md"
+# DFSPH steps by its own scheme: --integrators does not apply to it (one series, integrator "dfsph")
+"$sph" bench dam_break_dfsph --values 0.1,0.05 --kernels M4 --integrators leapfrog,rk4 --out "$work/bd" --quiet
+check "bench dam_break_dfsph" 0 $?
+ok "bench dfsph: one series" test "$(grep -c '^dam_break_dfsph,M4,dfsph,scene.dx,' "$work/bd/bench.csv")" = 2
 bad bench_bad_kernel 3 "M9" bench sod --kernels M9 --values 50,100
 bad bench_bad_integrator 3 "verlet" bench sod --integrators verlet --values 50,100
 bad bench_no_reference 3 "reference" bench box_lattice

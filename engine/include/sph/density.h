@@ -19,8 +19,10 @@ struct DensityStats {
 struct ProjectionStats {
   int density_iterations = 0;     ///< iterations of the constant-density solve
   int divergence_iterations = 0;  ///< iterations of the divergence-free solve
-  double density_error = 0.0;     ///< mean predicted compression (rho* - rho0)/rho0 at the solve's end [dimensionless]
-  double density_error_max = 0.0; ///< largest predicted compression of one particle [dimensionless]
+  /// mean |rho* - rho0|/rho0 at the density solve's end over the fluid: compression, and expansion where
+  /// a pressure acts (a free surface's particles expand freely) [dimensionless]
+  double density_error = 0.0;
+  double density_error_max = 0.0; ///< the same for the worst particle [dimensionless]
 };
 
 }  // namespace sph

@@ -29,8 +29,8 @@ struct Diagnostics {
   // DFSPH (physics.eos = dfsph; 0 otherwise), of the last step:
   int dfsph_iter = 0;            ///< iterations of the constant-density solve
   int dfsph_div_iter = 0;        ///< iterations of the divergence-free solve
-  double dfsph_error = 0.0;      ///< mean predicted compression (rho - rho0)/rho0 after the solve [dimensionless]
-  double dfsph_error_max = 0.0;  ///< largest predicted compression of one particle [dimensionless]
+  double dfsph_error = 0.0;      ///< mean density error after the solve (ProjectionStats::density_error) [dimensionless]
+  double dfsph_error_max = 0.0;  ///< the worst particle's [dimensionless]
 };
 
 /// CSV header line and row for diagnostics.csv.

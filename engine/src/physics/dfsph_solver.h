@@ -12,7 +12,7 @@
 // the fluid around them, as Adami et al.'s dummy particles (2012, JCP 231, 7057, eq. 27):
 //   kappa_w = max(0, sum_f kappa_f W_wf / sum_f W_wf + g . sum_f (x_w - x_f) W_wf / sum_f W_wf),
 // the second term (the hydrostatic one) in the density solve only. The step's kappa is the next step's
-// warm start (see finish()), and P = rho kappa is the step's pressure. Gathers in list order:
+// warm start (see finish()), and P = rho (kappa + kappa_v) is the step's pressure. Gathers in list order:
 // the same result for any thread count.
 #pragma once
 #include <cstdint>
@@ -31,9 +31,9 @@ class DfsphSolver {
   /// Corrects the predicted velocities so that the step keeps rho0 (Algorithm 2). Returns iterations;
   /// the mean and largest error at its end in `stats`.
   int density(StageContext& c, double dt, ProjectionStats& stats);
-  /// After both solves: P = rho kappa [pressure] (the density solve's: kappa_v only removes the velocity
-  /// divergence the step left, a correction near zero in a steady flow but noisy), and the divergence solve's warm start kept
-  /// as dt kappa_v: its pressure removes a velocity divergence within one step, so it scales as 1/dt
+  /// After both solves: P = rho (kappa + kappa_v) [pressure], what both exerted in the step; and the
+  /// divergence solve's warm start kept as dt kappa_v: its pressure removes a velocity divergence within
+  /// one step, so it scales as 1/dt
   /// (a warm start after a sliver of a step, e.g. one landing on an output time, would otherwise kick
   /// the next step by the ratio of the steps).
   void finish(StageContext& c, double dt) const;
