@@ -28,6 +28,10 @@ pyb::dict diagnostics(const PyWorld& w) {
   r["h_iter_max"] = d.h_iter_max;
   r["neighbours_mean"] = d.neighbours_mean;
   r["updates"] = d.updates;
+  r["dfsph_iter"] = d.dfsph_iter;  // DFSPH's solves of the last step (0 without)
+  r["dfsph_div_iter"] = d.dfsph_div_iter;
+  r["dfsph_error"] = d.dfsph_error;
+  r["dfsph_error_max"] = d.dfsph_error_max;
   return r;
 }
 

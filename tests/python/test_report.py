@@ -35,3 +35,20 @@ def test_warnings_name_a_reference_assumption_and_none_at_the_defaults():
     w = sph.World("sod")
     w.run_to(0.01)
     assert w.warnings() == []
+
+
+def test_dfsph_solves_are_reported_and_hold_the_density():
+    """DFSPH's columns of diagnostics.csv: its mean density error stays within liquid.dfsph_eta (0.1%), and
+    the inviscid drop keeps its kinetic energy (there is no internal energy: the pressure does no net work
+    on an incompressible flow) within 2%."""
+    w = sph.World("elliptical_drop_dfsph", set={"scene.dx": 0.05})
+    e0 = w.diagnostics()["E_kin"]
+    worst = 0.0
+    while w.time < 0.002 - 1e-12:
+        w.step(0.002 - w.time)
+        worst = max(worst, w.diagnostics()["dfsph_error"])
+    d = w.diagnostics()
+    assert d["dfsph_iter"] >= 0 and d["dfsph_div_iter"] >= 0
+    assert 0.0 < worst <= 1e-3
+    assert d["dfsph_error_max"] >= d["dfsph_error"]
+    assert abs(d["E_kin"] / e0 - 1.0) < 0.02
