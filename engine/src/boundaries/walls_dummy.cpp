@@ -33,13 +33,6 @@ class WallsDummy final : public Stage {
     const bool body = c.prm.physics.body_force == BodyForce::Uniform;
     const double g[3] = {body ? c.prm.body.gx : 0.0, body ? c.prm.body.gy : 0.0, body ? c.prm.body.gz : 0.0};
     const double support = K.support();
-    // the walls' Omega in the standard form's P_b/(Omega_b rho_b^2): no grad-h term (a summation density
-    // solves h for the fluid only; unset, 0/0 stopped `--set physics.density=summation physics.force=standard`)
-    if (p.has(Field::Omega)) {
-      std::fill(p[Field::Omega].begin() + static_cast<std::ptrdiff_t>(begin),
-                p[Field::Omega].begin() + static_cast<std::ptrdiff_t>(end), 1.0);
-      copy_ghost_field(p, Field::Omega);
-    }
 #pragma omp parallel for schedule(dynamic, 64) if (end >= kParallelMin)  // the scene's size decides
     for (std::size_t w = begin; w < end; ++w) {
       const double hw = h[w], R2 = support * support * hw * hw;

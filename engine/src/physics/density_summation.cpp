@@ -218,6 +218,10 @@ class DensitySummation final : public Stage {
       if (!hs.particle(c.summed_row(k), cand, bisections)) ++overflow;
     }
     if (overflow > 0) return false;
+    // wall particles solve no h: Omega = 1 in the forces' P_b/(Omega_b rho_b^2) (unset, 0/0 stopped the
+    // standard form beside dummy walls at its first step: dam_break with physics.force=standard)
+    auto& omega = c.p[Field::Omega];
+    std::fill(omega.begin() + static_cast<std::ptrdiff_t>(n), omega.begin() + static_cast<std::ptrdiff_t>(c.p.size()), 1.0);
     record_stats(c, bisections);
     return true;
   }

@@ -169,7 +169,7 @@ int DfsphSolver::solve(StageContext& c, std::vector<double>& total, double dt, d
 
 int DfsphSolver::divergence(StageContext& c, double dt) {
   auto& kv = c.p[Field::DfsphKappaV];  // the last step's dt kappa_v [length^2/time]: its kappa in this step
-  for (std::size_t a = 0; a < c.p.fluid(); ++a) kv[a] /= dt;
+  for (std::size_t a = 0; a < c.p.fluid(); ++a) kv[a] = full_[a] ? kv[a] / dt : 0.0;  // no pressure where not full
   const double off = -std::numeric_limits<double>::infinity();
   // the source is dt Drho/Dt, compared with rho0 as the density's
   return solve(c, kv, dt, c.prm.liquid.dfsph_eta_div, false,

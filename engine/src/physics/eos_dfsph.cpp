@@ -18,17 +18,13 @@ class EosDfsph final : public Stage {
  public:
   EosDfsph()
       : Stage({.name = "pressure: DFSPH",
-               .needs = {Field::Mass, Field::Density, Field::H, Field::Omega},
+               .needs = {Field::Mass, Field::Density, Field::H},
                .writes = {Field::Pressure, Field::SoundSpeed, Field::DfsphKappa, Field::DfsphKappaV},
                .shares = {Field::Pressure, Field::SoundSpeed}}) {}
   bool run(StageContext& c) override {
     Particles& p = c.p;
     std::fill(p[Field::Pressure].begin(), p[Field::Pressure].begin() + static_cast<std::ptrdiff_t>(p.size()), 0.0);
     std::fill(p[Field::SoundSpeed].begin(), p[Field::SoundSpeed].begin() + static_cast<std::ptrdiff_t>(p.size()), 0.0);
-    // the walls' Omega in the force loop's P_b/(Omega_b rho_b^2): fixed h, no grad-h term
-    std::fill(p[Field::Omega].begin() + static_cast<std::ptrdiff_t>(p.fluid()),
-              p[Field::Omega].begin() + static_cast<std::ptrdiff_t>(p.size()), 1.0);
-    copy_ghost_field(p, Field::Omega);
     return true;
   }
   bool projects() const override { return true; }
