@@ -50,9 +50,18 @@ SPH_SCENES(115, dfsph_liquid_scenes) {
   out.push_back(incompressible(dam_break_scene(),
                                "the dam break incompressible (DFSPH): surge front vs Martin & Moyce, Koshizuka & Oka",
                                0.02, 1e-3));
-  // the tank: nu = 0.01 damps the settling of the lattice; 1e-4: its pressure within 2% (1e-3: 5%)
-  out.push_back(incompressible(hydrostatic_tank_scene(),
-                               "water at rest, incompressible (DFSPH); pressure against rho0 g (H - y)", 0.01, 1e-4));
+  // The tank: nu = 0.01 damps the settling of the lattice. A pressure off by dP everywhere compresses
+  // the 1 m column by only dt^2 dP / (rho0 H^2) in a 4 ms step, so a density tolerance leaves the pressure
+  // free within eta rho0 H^2 / dt^2: with Jacobi at 1e-4 the mid-depth pressure swung by +-50% from
+  // step to step; BiCGStab to 1e-7 keeps it within 2.2% (about 270 operator applications a step).
+  SceneSpec tank = incompressible(hydrostatic_tank_scene(),
+                                  "water at rest, incompressible (DFSPH); pressure against rho0 g (H - y)", 0.01, 1e-7);
+  tank.defaults.liquid.dfsph_solver = DfsphSolverType::BiCGStab;
+  tank.defaults.liquid.dfsph_max_iter = 5000;
+  // its own bound: DFSPH's particle pressures scatter about the hydrostatic line far more than Tait's
+  // (measured to t = 1 at its defaults: 0.27 at t = 0.7; the Tait tank's 8.5e-3)
+  tank.error_bounds = {{"L1_p_rel", 0.35}};
+  out.push_back(std::move(tank));
   return out;
 }
 

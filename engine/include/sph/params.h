@@ -65,6 +65,12 @@ struct GasParams {
   bool operator==(const GasParams&) const = default;
 };
 
+/// How DFSPH's pressure solves iterate (liquid.dfsph_solver; physics/dfsph_solver.h).
+enum class DfsphSolverType {
+  Jacobi,    ///< projected, relaxed Jacobi, as Bender & Koschier's Algorithms 2 and 3
+  BiCGStab,  ///< BiCGStab on the particles under pressure (physics/dfsph_krylov.cpp): a pressure error smooth over the liquid too
+};
+
 /// Liquids: weakly compressible by the Tait/Cole EOS (physics.eos = tait; seed 001 eq. 3), or
 /// incompressible by DFSPH's pressure solves (physics.eos = dfsph; Bender & Koschier 2017).
 struct LiquidParams {
@@ -78,7 +84,8 @@ struct LiquidParams {
   double dfsph_eta = 5e-4;
   /// DFSPH: the divergence solve iterates until the mean dt (Drho/Dt)/rho0 is at most this [dimensionless]
   double dfsph_eta_div = 1e-3;
-  int dfsph_max_iter = 1000;  ///< DFSPH: iteration cap of each solve (reaching it warns) [iterations]
+  int dfsph_max_iter = 1000;  ///< DFSPH: cap on each solve's applications of the pressure operator (reaching it warns)
+  DfsphSolverType dfsph_solver = DfsphSolverType::Jacobi;  ///< DFSPH: how the solves iterate
   bool operator==(const LiquidParams&) const = default;
 };
 
@@ -187,6 +194,8 @@ bool parse(const std::string& s, Softening& out);
 const char* to_string(PointControl c);
 const char* to_string(ViscSwitch s);
 bool parse(const std::string& s, ViscSwitch& out);
+const char* to_string(DfsphSolverType s);
+bool parse(const std::string& s, DfsphSolverType& out);
 bool parse(const std::string& s, PointControl& out);
 
 }  // namespace sph

@@ -85,8 +85,16 @@ void add_eos(std::vector<ParamInfo>& t) {
   t.push_back(real({"liquid.dfsph_eta_div", "dimensionless",
                     "DFSPH: the divergence solve stops when the mean dt (Drho/Dt)/rho0 is at most this", "", kDfsph, true},
                    [](Params& p) -> double& { return p.liquid.dfsph_eta_div; }, 1e-7, 0.1));
-  t.push_back(integer({"liquid.dfsph_max_iter", "iterations", "DFSPH: iteration cap of each pressure solve", "", kDfsph, true},
+  t.push_back(integer({"liquid.dfsph_max_iter", "iterations",
+                       "DFSPH: cap on each pressure solve's iterations (applications of the pressure operator)", "",
+                       kDfsph, true},
                       [](Params& p) -> int& { return p.liquid.dfsph_max_iter; }, 1, 10000));
+  t.push_back(choice<DfsphSolverType>({"liquid.dfsph_solver", "choice",
+                                       "DFSPH: how the pressure solves iterate: jacobi (Bender & Koschier's relaxed "
+                                       "Jacobi) or bicgstab (also removes a pressure error smooth over the liquid)",
+                                       "", kDfsph, true},
+                                      [](Params& p) -> DfsphSolverType& { return p.liquid.dfsph_solver; },
+                                      {DfsphSolverType::Jacobi, DfsphSolverType::BiCGStab}));
 }
 
 /// The artificial and physical viscosities and the viscosity switch.

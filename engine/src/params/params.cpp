@@ -28,6 +28,9 @@ constexpr std::pair<const char*, PointControl> kControls[] = {{"none", PointCont
 constexpr std::pair<const char*, ViscSwitch> kSwitches[] = {
     {"none", ViscSwitch::None}, {"balsara", ViscSwitch::Balsara}, {"cullen_dehnen", ViscSwitch::CullenDehnen}};
 
+constexpr std::pair<const char*, DfsphSolverType> kDfsphSolvers[] = {{"jacobi", DfsphSolverType::Jacobi},
+                                                                    {"bicgstab", DfsphSolverType::BiCGStab}};
+
 template <class E, std::size_t N>
 const char* name_of(E e, const std::pair<const char*, E> (&table)[N]) {
   for (const auto& [name, value] : table)
@@ -47,5 +50,7 @@ const char* to_string(PointControl c) { return name_of(c, kControls); }
 bool parse(const std::string& s, PointControl& out) { return parse_enum(s, out, kControls); }
 const char* to_string(ViscSwitch s) { return name_of(s, kSwitches); }
 bool parse(const std::string& s, ViscSwitch& out) { return parse_enum(s, out, kSwitches); }
+const char* to_string(DfsphSolverType s) { return name_of(s, kDfsphSolvers); }
+bool parse(const std::string& s, DfsphSolverType& out) { return parse_enum(s, out, kDfsphSolvers); }
 
 }  // namespace sph

@@ -20,10 +20,6 @@ constexpr double kFullShare = 0.6;
 /// (Ihmsen et al. 2014) relaxes by 0.5, enough in 2D; in 3D (some 60 neighbours instead of 20) the
 /// hydrostatic_tank_3d's first solve diverged at 0.5 and converges at 0.3 (0.2, 0.1: slower, no better).
 constexpr double kRelax2d = 0.5, kRelax3d = 0.3;
-/// A solve also iterates until no particle's error exceeds this many times the tolerance on the mean: a
-/// pressure too low everywhere compresses only the bottom rows, which the mean hardly sees (the tank's
-/// pressure swung between 0.4 and 2.2 times the hydrostatic one with the mean alone).
-constexpr double kMaxShare = 20.0;
 
 /// Serial sum and maximum of the first n entries: the same for any thread count.
 std::pair<double, double> sum_max(const std::vector<double>& e, std::size_t n) {
@@ -100,18 +96,34 @@ void DfsphSolver::prepare(const StageContext& c) {
   prepare_walls(c);
 }
 
-double DfsphSolver::divergence_of(const StageContext& c, std::size_t a) const {
-  const Particles& p = c.p;
+double DfsphSolver::divergence_of(std::size_t a, const double* const v[3]) const {
   double d = 0.0;
   for (std::size_t k = start_[a]; k < start_[a + 1]; ++k) {
-    double v[3] = {p.v[0][a], p.v[1][a], p.v[2][a]};
+    double w[3] = {v[0][a], v[1][a], v[2][a]};
     if (!wall_[k]) {
       const std::uint32_t s = src_[k];
-      for (int q = 0; q < 3; ++q) v[q] -= (flip_[k] >> q & 1u) ? -p.v[q][s] : p.v[q][s];
+      for (int q = 0; q < 3; ++q) w[q] -= (flip_[k] >> q & 1u) ? -v[q][s] : v[q][s];
     }
-    d += v[0] * gx_[k] + v[1] * gy_[k] + v[2] * gz_[k];
+    d += w[0] * gx_[k] + w[1] * gy_[k] + w[2] * gz_[k];
   }
   return d;
+}
+
+double DfsphSolver::source(const StageContext& c, const Target& t, std::size_t a, double dt) const {
+  const double* const v[3] = {c.p.v[0].data(), c.p.v[1].data(), c.p.v[2].data()};
+  if (t.density) return c.p[Field::Density][a] + dt * divergence_of(a, v) - c.prm.liquid.rho0;
+  return full_[a] ? dt * divergence_of(a, v) : -std::numeric_limits<double>::infinity();
+}
+
+void DfsphSolver::pressure_sum(std::size_t a, const std::vector<double>& k, const std::vector<double>& kw,
+                               const std::vector<double>& rho, std::size_t n, double out[3]) const {
+  const double ka = k[a] / rho[a];
+  out[0] = out[1] = out[2] = 0.0;
+  for (std::size_t q = start_[a]; q < start_[a + 1]; ++q) {
+    const std::uint32_t s = src_[q];
+    const double f = ka + (wall_[q] ? kw[s - n] : k[s]) / rho[s];
+    out[0] += f * gx_[q]; out[1] += f * gy_[q]; out[2] += f * gz_[q];
+  }
 }
 
 void DfsphSolver::apply(StageContext& c, const std::vector<double>& kap, const std::vector<double>& kw,
@@ -121,66 +133,75 @@ void DfsphSolver::apply(StageContext& c, const std::vector<double>& kap, const s
   const auto& rho = p[Field::Density];
 #pragma omp parallel for schedule(static) if (threaded_)
   for (std::size_t a = 0; a < n; ++a) {
-    const double ka = kap[a] / rho[a];
-    double dv[3] = {0.0, 0.0, 0.0};
-    for (std::size_t k = start_[a]; k < start_[a + 1]; ++k) {
-      const std::uint32_t s = src_[k];
-      const double f = ka + (wall_[k] ? kw[s - n] : kap[s]) / rho[s];
-      dv[0] += f * gx_[k]; dv[1] += f * gy_[k]; dv[2] += f * gz_[k];
-    }
+    double dv[3];
+    pressure_sum(a, kap, kw, rho, n, dv);
     for (int q = 0; q < p.dim(); ++q) p.v[q][a] -= dt * dv[q];
   }
 }
 
-template <class Source>
-int DfsphSolver::solve(StageContext& c, std::vector<double>& total, double dt, double tol, bool hydrostatic,
-                       Source source) {
+void DfsphSolver::apply_change(StageContext& c, const std::vector<double>& total, bool hydrostatic, double dt) {
+  wall_kappa(total, hydrostatic, kw_new_);
+  for (std::size_t w = 0; w < kw_.size(); ++w) {  // kw_new_ becomes the walls' change
+    const double next = kw_new_[w];
+    kw_new_[w] = next - kw_[w];
+    kw_[w] = next;
+  }
+  apply(c, kappa_, kw_new_, dt);
+}
+
+bool DfsphSolver::converged(const StageContext& c, const std::vector<double>& total, double dt, const Target& t) {
   const std::size_t n = c.p.fluid();
   const double rho0 = c.prm.liquid.rho0;
-  wall_kappa(total, hydrostatic, kw_);
-  apply(c, total, kw_, dt);  // the warm start: the last step's pressure
-  kappa_.resize(n); err_.resize(n);
+  res_.resize(n); err_.resize(n);
+#pragma omp parallel for schedule(static) if (threaded_)
+  for (std::size_t a = 0; a < n; ++a) {
+    res_[a] = source(c, t, a, dt);
+    // compression, or a pressure where there is none (s < 0 with kappa > 0: a warm start that pushes
+    // too hard, e.g. after a short step, would otherwise stay and fling particles apart)
+    err_[a] = (total[a] > 0.0 ? std::abs(res_[a]) : std::max(0.0, res_[a])) / rho0;
+  }
+  const auto [sum, worst] = sum_max(err_, n);
+  last_mean_ = n ? sum / static_cast<double>(n) : 0.0;
+  last_max_ = worst;
+  return last_mean_ <= t.tol && last_max_ <= kMaxShare * t.tol;
+}
+
+int DfsphSolver::sweeps(StageContext& c, std::vector<double>& total, double dt, const Target& t, int count,
+                        bool& done) {
+  const std::size_t n = c.p.fluid();
+  kappa_.resize(n);
   const double relax = c.p.dim() == 3 ? kRelax3d : kRelax2d;
   int it = 0;
-  for (;; ++it) {
+  while (!(done = converged(c, total, dt, t)) && it < count) {
 #pragma omp parallel for schedule(static) if (threaded_)
-    for (std::size_t a = 0; a < n; ++a) {
-      const double s = source(a);  // signed; -inf: no pressure at a
-      kappa_[a] = std::max(0.0, total[a] + relax * s * alpha_[a] / (dt * dt)) - total[a];
-      // compression, or a pressure where there is none (s < 0 with kappa > 0: a warm start that pushes
-      // too hard, e.g. after a short step, would otherwise stay and fling particles apart)
-      err_[a] = (total[a] > 0.0 ? std::abs(s) : std::max(0.0, s)) / rho0;
-    }
-    const auto [sum, worst] = sum_max(err_, n);
-    last_mean_ = n ? sum / static_cast<double>(n) : 0.0;
-    last_max_ = worst;
-    if ((last_mean_ <= tol && last_max_ <= kMaxShare * tol) || it >= c.prm.liquid.dfsph_max_iter) break;
+    for (std::size_t a = 0; a < n; ++a)  // res_ = -inf (no pressure at a) gives kappa = 0
+      kappa_[a] = std::max(0.0, total[a] + relax * res_[a] * alpha_[a] / (dt * dt)) - total[a];
     for (std::size_t a = 0; a < n; ++a) total[a] += kappa_[a];
-    wall_kappa(total, hydrostatic, kw_new_);
-    for (std::size_t w = 0; w < kw_.size(); ++w) {  // kw_new_ becomes the walls' change
-      const double next = kw_new_[w];
-      kw_new_[w] = next - kw_[w];
-      kw_[w] = next;
-    }
-    apply(c, kappa_, kw_new_, dt);
+    apply_change(c, total, t.density, dt);
+    ++it;
   }
   return it;
+}
+
+int DfsphSolver::jacobi(StageContext& c, std::vector<double>& total, double dt, const Target& t) {
+  wall_kappa(total, t.density, kw_);
+  apply(c, total, kw_, dt);  // the warm start: the last step's pressure
+  bool done = false;
+  return sweeps(c, total, dt, t, c.prm.liquid.dfsph_max_iter, done);
 }
 
 int DfsphSolver::divergence(StageContext& c, double dt) {
   auto& kv = c.p[Field::DfsphKappaV];  // the last step's dt kappa_v [length^2/time]: its kappa in this step
   for (std::size_t a = 0; a < c.p.fluid(); ++a) kv[a] = full_[a] ? kv[a] / dt : 0.0;  // no pressure where not full
-  const double off = -std::numeric_limits<double>::infinity();
   // the source is dt Drho/Dt, compared with rho0 as the density's
-  return solve(c, kv, dt, c.prm.liquid.dfsph_eta_div, false,
-               [&](std::size_t a) { return full_[a] ? dt * divergence_of(c, a) : off; });
+  const Target t{false, c.prm.liquid.dfsph_eta_div};
+  return c.prm.liquid.dfsph_solver == DfsphSolverType::Jacobi ? jacobi(c, kv, dt, t) : krylov(c, kv, dt, t);
 }
 
 int DfsphSolver::density(StageContext& c, double dt, ProjectionStats& stats) {
-  const auto& rho = c.p[Field::Density];
-  const double rho0 = c.prm.liquid.rho0;
-  const int it = solve(c, c.p[Field::DfsphKappa], dt, c.prm.liquid.dfsph_eta, true,
-                       [&](std::size_t a) { return rho[a] + dt * divergence_of(c, a) - rho0; });
+  const Target t{true, c.prm.liquid.dfsph_eta};
+  auto& k = c.p[Field::DfsphKappa];
+  const int it = c.prm.liquid.dfsph_solver == DfsphSolverType::Jacobi ? jacobi(c, k, dt, t) : krylov(c, k, dt, t);
   stats.density_error = last_mean_;
   stats.density_error_max = last_max_;
   return it;

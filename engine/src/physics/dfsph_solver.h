@@ -13,7 +13,8 @@
 //   kappa_w = max(0, sum_f kappa_f W_wf / sum_f W_wf + g . sum_f (x_w - x_f) W_wf / sum_f W_wf),
 // the second term (the hydrostatic one) in the density solve only. The step's kappa is the next step's
 // warm start (see finish()), and P = rho (kappa + kappa_v) is the step's pressure. Gathers in list order:
-// the same result for any thread count.
+// the same result for any thread count. liquid.dfsph_solver = bicgstab solves the same system by
+// BiCGStab on the particles under pressure instead (dfsph_krylov.cpp), for tight tolerances.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -39,18 +40,48 @@ class DfsphSolver {
   void finish(StageContext& c, double dt) const;
 
  private:
-  /// Projected Jacobi from the warm start `total` (applied first) until the mean error is at most tol;
-  /// source(a) is signed [density], -inf: no pressure at a. `hydrostatic`: the walls' g term.
-  template <class Source>
-  int solve(StageContext& c, std::vector<double>& total, double dt, double tol, bool hydrostatic, Source source);
+  /// A solve also iterates until no particle's error exceeds this many times the tolerance on the mean: a
+  /// pressure too low everywhere compresses only the bottom rows, which the mean hardly sees (the tank's
+  /// pressure swung between 0.4 and 2.2 times the hydrostatic one with the mean alone).
+  static constexpr double kMaxShare = 20.0;
+  /// What a solve drives to zero at fluid a: the predicted compression rho_a + dt sum_b (v_a - v_b) . g_ab
+  /// - rho0 (density; the walls' kappa then has its hydrostatic term), or dt sum_b (v_a - v_b) . g_ab
+  /// where the kernel is full (-inf elsewhere: no pressure there). Both [density].
+  struct Target {
+    bool density;
+    double tol;  ///< mean error at which the solve stops [dimensionless]
+  };
+  double source(const StageContext& c, const Target& t, std::size_t a, double dt) const;
+  /// Sources into res_ and errors into err_ for the pressure `total`; the mean and largest error into
+  /// last_mean_ and last_max_. True when both are within the tolerance (or the cap on iterations is reached).
+  bool converged(const StageContext& c, const std::vector<double>& total, double dt, const Target& t);
+  /// From the warm start `total` (applied first) until converged(): projected Jacobi (liquid.dfsph_solver
+  /// = jacobi) or BiCGStab on the particles under pressure (bicgstab, dfsph_krylov.cpp). Returns
+  /// the applications of the pressure operator.
+  int jacobi(StageContext& c, std::vector<double>& total, double dt, const Target& t);
+  /// At most `count` projected Jacobi sweeps, fewer if converged() first (then `done`). Returns the sweeps.
+  int sweeps(StageContext& c, std::vector<double>& total, double dt, const Target& t, int count, bool& done);
+  int krylov(StageContext& c, std::vector<double>& total, double dt, const Target& t);
+  /// BiCGStab on the linear system of the active particles, rhs in b_, solution in x_, until the mean and
+  /// largest residual are within the tolerances [dimensionless] or `budget` operations (dfsph_krylov.cpp).
+  int bicgstab(const StageContext& c, double dt, double mean_tol, double max_tol, int budget);
+  /// y = L x: the change of the sources when kappa changes by x on the active particles (walls linear in
+  /// the fluid's kappa), y = 0 on the others (dfsph_krylov.cpp).
+  void op(const StageContext& c, const std::vector<double>& x, std::vector<double>& y, double dt);
   /// The walls' fluid neighbours, weights and hydrostatic terms (dfsph_walls.cpp).
   void prepare_walls(const StageContext& c);
   /// The walls' kappa from the fluid's `k` (Adami's extrapolation), into `out` (one per wall particle).
   void wall_kappa(const std::vector<double>& k, bool hydrostatic, std::vector<double>& out) const;
+  /// out = sum_b (k_a/rho_a + k_b/rho_b) g_ab of fluid a, k_b = kw[b - n] for a wall (n fluid particles).
+  void pressure_sum(std::size_t a, const std::vector<double>& k, const std::vector<double>& kw,
+                    const std::vector<double>& rho, std::size_t n, double out[3]) const;
   /// v_a -= dt sum_b (k_a/rho_a + k_b/rho_b) g_ab for every fluid a, k_b = kw[b - fluid] for a wall.
   void apply(StageContext& c, const std::vector<double>& k, const std::vector<double>& kw, double dt) const;
-  /// sum_b (v_a - v_b) . g_ab of fluid a (Drho/Dt) [density/time].
-  double divergence_of(const StageContext& c, std::size_t a) const;
+  /// Applies the change of `total` to kappa_ and the walls' to kw_ (kept in step with `total`).
+  void apply_change(StageContext& c, const std::vector<double>& total, bool hydrostatic, double dt);
+  /// sum_b (v_a - v_b) . g_ab of fluid a for the velocities v[0..2] of the fluid (walls at rest; a ghost's
+  /// from its source, mirrored) [density/time].
+  double divergence_of(std::size_t a, const double* const v[3]) const;
 
   std::vector<std::size_t> start_;     ///< pairs of fluid a: [start_[a], start_[a + 1])
   std::vector<std::uint32_t> src_;     ///< the neighbour's real index (a ghost's source)
@@ -63,7 +94,9 @@ class DfsphSolver {
   std::vector<std::uint32_t> wsrc_;    ///< that fluid particle (a ghost's source)
   std::vector<double> wweight_;        ///< W_wf / sum_f W_wf [dimensionless]
   std::vector<double> whyd_;           ///< g . sum_f (x_w - x_f) W_wf / sum_f W_wf per wall [length^2/time^2]
-  std::vector<double> kappa_, err_, kw_, kw_new_;  ///< per-iteration scratch
+  std::vector<double> kappa_, err_, res_, kw_, kw_new_;  ///< per-iteration scratch
+  std::vector<std::uint8_t> act_;  ///< 1: in the Krylov solve's linear system (under pressure or compressed)
+  std::vector<double> x_, b_, r_, rh_, pv_, ph_, vv_, sv_, sh_, tv_, dv_[3], kwl_;  ///< BiCGStab's vectors
   bool threaded_ = false;                           ///< loops in a thread team (core/parallel.h)
   double last_mean_ = 0.0, last_max_ = 0.0;         ///< the last solve's mean and largest error [dimensionless]
 };
