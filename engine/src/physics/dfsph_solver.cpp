@@ -195,7 +195,9 @@ int DfsphSolver::divergence(StageContext& c, double dt) {
   for (std::size_t a = 0; a < c.p.fluid(); ++a) kv[a] = full_[a] ? kv[a] / dt : 0.0;  // no pressure where not full
   // the source is dt Drho/Dt, compared with rho0 as the density's
   const Target t{false, c.prm.liquid.dfsph_eta_div};
-  return c.prm.liquid.dfsph_solver == DfsphSolverType::Jacobi ? jacobi(c, kv, dt, t) : krylov(c, kv, dt, t);
+  const int it = c.prm.liquid.dfsph_solver == DfsphSolverType::Jacobi ? jacobi(c, kv, dt, t) : krylov(c, kv, dt, t);
+  kw_div_ = kw_;
+  return it;
 }
 
 int DfsphSolver::density(StageContext& c, double dt, ProjectionStats& stats) {
@@ -217,6 +219,9 @@ void DfsphSolver::finish(StageContext& c, double dt) const {
     P[a] = rho[a] * (k[a] + kv[a]);
     kv[a] *= dt;
   }
+  // the walls' pressure, extrapolated from the fluid's as in both solves: what a sensor on a wall reads
+  for (std::size_t w = 0; w < kw_.size(); ++w)
+    P[p.fluid() + w] = rho[p.fluid() + w] * (kw_[w] + (w < kw_div_.size() ? kw_div_[w] : 0.0));
 }
 
 }  // namespace sph

@@ -32,7 +32,8 @@ class DfsphSolver {
   /// Corrects the predicted velocities so that the step keeps rho0 (Algorithm 2). Returns iterations;
   /// the mean and largest error at its end in `stats`.
   int density(StageContext& c, double dt, ProjectionStats& stats);
-  /// After both solves: P = rho (kappa + kappa_v) [pressure], what both exerted in the step; and the
+  /// After both solves: P = rho (kappa + kappa_v) [pressure], what both exerted in the step (on the walls
+  /// too, from their extrapolated kappa, for wall sensors; the forces do not use it); and the
   /// divergence solve's warm start kept as dt kappa_v: its pressure removes a velocity divergence within
   /// one step, so it scales as 1/dt
   /// (a warm start after a sliver of a step, e.g. one landing on an output time, would otherwise kick
@@ -95,6 +96,7 @@ class DfsphSolver {
   std::vector<double> wweight_;        ///< W_wf / sum_f W_wf [dimensionless]
   std::vector<double> whyd_;           ///< g . sum_f (x_w - x_f) W_wf / sum_f W_wf per wall [length^2/time^2]
   std::vector<double> kappa_, err_, res_, kw_, kw_new_;  ///< per-iteration scratch
+  std::vector<double> kw_div_;  ///< the walls' kappa at the end of the divergence solve (finish() adds it to P)
   std::vector<std::uint8_t> act_;  ///< 1: in the Krylov solve's linear system (under pressure or compressed)
   std::vector<double> x_, b_, r_, rh_, pv_, ph_, vv_, sv_, sh_, tv_, dv_[3], kwl_;  ///< BiCGStab's vectors
   bool threaded_ = false;                           ///< loops in a thread team (core/parallel.h)
