@@ -5,13 +5,14 @@
 // dt^2 dP / (rho0 H^2) in one step, 1e-4 for dP = 6 kPa in the 1 m tank at dt = 4 ms. A Krylov solve
 // removes such an error in about H/dx iterations instead of (H/dx)^2.
 //
-// The system: the particles under pressure or compressed (the active set, A) take kappa + x_A with
+// The system: the particles a Jacobi step would leave under pressure (the active set A: kappa + s alpha /
+// dt^2 > 0, the primal-dual active set of Hintermueller, Ito & Kunisch 2002) take kappa + x_A with
 // L_AA x_A = -s_A, where L x is the change of the sources s when kappa changes by x (walls follow the
 // fluid linearly by their extrapolation) and is not symmetric because of the walls: hence BiCGStab (van
 // der Vorst 1992, SIAM J. Sci. Stat. Comput. 13, 631), right-preconditioned by Jacobi's own diagonal,
-// M^-1 = alpha/dt^2. Then kappa = max(0, kappa + x) is applied and the sources recomputed: a particle
-// that the solve took below zero leaves the active set, one newly compressed joins it, and the solve
-// repeats until converged(). Every sum over particles is serial or a gather: the same result for any
+// M^-1 = alpha/dt^2. Then kappa = max(0, kappa + x) on A and 0 off it is applied, a few Jacobi sweeps
+// follow, and the active set is recomputed, until converged() (or, should the set cycle, Jacobi alone
+// finishes). Every sum over particles is serial or a gather: the same result for any
 // thread count.
 #include <algorithm>
 #include <cmath>
