@@ -54,7 +54,7 @@ class DfsphSolver {
   };
   double source(const StageContext& c, const Target& t, std::size_t a, double dt) const;
   /// Sources into res_ and errors into err_ for the pressure `total`; the mean and largest error into
-  /// last_mean_ and last_max_. True when both are within the tolerance (or the cap on iterations is reached).
+  /// last_mean_ and last_max_. True when both are within the tolerance.
   bool converged(const StageContext& c, const std::vector<double>& total, double dt, const Target& t);
   /// From the warm start `total` (applied first) until converged(): projected Jacobi (liquid.dfsph_solver
   /// = jacobi) or BiCGStab on the particles under pressure (bicgstab, dfsph_krylov.cpp). Returns
