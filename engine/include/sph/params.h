@@ -155,6 +155,7 @@ struct WallParams {
   double p1 = 4.0;  ///< repulsive exponent [dimensionless]
   double p2 = 2.0;  ///< attractive exponent, p1 > p2 [dimensionless]
   double r0 = 0.0;  ///< cut-off [length]; 0 = the scene's initial particle spacing
+  double friction = 1.0;  ///< share of the viscosity between fluid and dummy walls: 1 no-slip, 0 free-slip
   bool operator==(const WallParams&) const = default;
 };
 

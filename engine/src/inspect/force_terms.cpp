@@ -128,7 +128,7 @@ double laplacian_of(const StageContext& c, std::size_t i, std::size_t j, double 
   const Particles& p = c.p;
   const auto& rho = p[Field::Density];
   const auto& h = p[Field::H];
-  return terms::ViscLaplacian(c).factor(p[Field::Mass][j], rho[i], rho[j], rdW, r2, 0.5 * (h[i] + h[j]));
+  return terms::ViscLaplacian(c).factor(static_cast<std::uint32_t>(j), p[Field::Mass][j], rho[i], rho[j], rdW, r2, 0.5 * (h[i] + h[j]));
 }
 
 Vec3 velocity_difference(const Particles& p, std::size_t i, std::size_t j) {

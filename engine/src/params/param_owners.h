@@ -68,6 +68,9 @@ const Owner kFpmViscous{"the viscous Burgers scheme", Slot::Fpm,
                         [](const Params& p) { return p.physics.fpm == FpmType::BurgersViscous; }};
 const Owner kLJ{"the Lennard-Jones wall stage", Slot::Walls,
                 [](const Params& p) { return p.physics.walls == WallType::LennardJones; }};
+const Owner kWallFriction{"a viscosity stage with dummy walls", Slot::Walls, [](const Params& p) {
+                           return p.physics.walls == WallType::Dummy && p.physics.viscosity != ViscType::None;
+                         }};
 const Owner kCorrected{"the kernel corrections (corrected formulations, MLS density re-initialisation)", Slot::Force,
                        [](const Params& p) {
                          return p.physics.corrected() ||

@@ -211,6 +211,11 @@ void add_fpm_walls_corrections(std::vector<ParamInfo>& t) {
   t.push_back(real({"walls.r0", "length", "Lennard-Jones cut-off (seed 001: the initial spacing); 0 = the scene's", "",
                     kLJ, true},
                    [](Params& p) -> double& { return p.walls.r0; }, 0.0, 1e6));
+  t.push_back(real({"walls.friction", "dimensionless",
+                    "share of the viscosity acting between fluid and dummy-wall particles: 1 = no-slip walls, "
+                    "0 = free-slip (Adami et al. 2012); below 1 a fast impact can push fluid through the walls",
+                    "", kWallFriction, true},
+                   [](Params& p) -> double& { return p.walls.friction; }, 0.0, 1.0));
   t.push_back(real({"correction.min_rcond", "dimensionless",
                     "below this reciprocal condition number a kernel or gradient correction falls back to order 0", "",
                     kCorrected, true},

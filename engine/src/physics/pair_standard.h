@@ -146,7 +146,7 @@ struct Pairs {
   }
   [[gnu::always_inline]] double laplacian(const Self& s, const Geometry g) const {
     const std::uint32_t j = g.j;
-    if constexpr (V::kLaplacian) return visc.factor(f.m[j], s.rho, f.rho[j], g.r * g.dWm, g.r2, 0.5 * (s.h + f.h[j]));
+    if constexpr (V::kLaplacian) return visc.factor(j, f.m[j], s.rho, f.rho[j], g.r * g.dWm, g.r2, 0.5 * (s.h + f.h[j]));
     return 0.0;
   }
 

@@ -198,7 +198,7 @@ struct Pairs {
       rdG += g.r[q] * Gm;
     }
     if constexpr (V::kLaplacian) {
-      const double fl = visc.factor(f.m[j], s.rho, f.rho[j], rdG, g.r2, 0.5 * (s.h + f.h[j]));
+      const double fl = visc.factor(j, f.m[j], s.rho, f.rho[j], rdG, g.r2, 0.5 * (s.h + f.h[j]));
       for (int q = 0; q < D; ++q) o.L[q][k] = fl * g.dv[q];
     }
   }

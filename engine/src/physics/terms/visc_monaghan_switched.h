@@ -20,17 +20,18 @@ struct ViscMonaghanSwitched : ViscParts<true, false> {
   static constexpr std::string_view kName = "artificial viscosity Pi (alpha per particle)";
   double beta_ref, eps;  ///< beta / alpha_ref [dimensionless], visc.eps
   const double* alpha;   ///< alpha of every particle, ghosts included
+  WallFriction wall;     ///< the share between fluid and walls (walls.friction)
   static double reference(const Params& p) {
     return p.physics.visc_switch == ViscSwitch::CullenDehnen ? p.visc.alpha_max : p.visc.alpha;
   }
   explicit ViscMonaghanSwitched(const StageContext& c)
       : ViscParts{std::max(1.0, reference(c.prm)), std::max(1.0, 0.5 * c.prm.visc.beta)},
         beta_ref(reference(c.prm) > 0.0 ? c.prm.visc.beta / reference(c.prm) : 0.0), eps(c.prm.visc.eps),
-        alpha(c.p[Field::ViscAlpha].data()) {}
+        alpha(c.p[Field::ViscAlpha].data()), wall(c) {}
   double pi(std::size_t i, std::uint32_t j, double vdotr, double r2, double hi, double hj, double rhoi, double rhoj,
             double ci, double cj) const {
     const double a = 0.5 * (alpha[i] + alpha[j]);
-    return pair::monaghan_pi_nb(vdotr, r2, hi, hj, rhoi, rhoj, ci, cj, a, beta_ref * a, eps);
+    return wall(j) * pair::monaghan_pi_nb(vdotr, r2, hi, hj, rhoi, rhoj, ci, cj, a, beta_ref * a, eps);
   }
   static double heat(double mj, double Pi, double w, double dWm) { return ViscMonaghan::heat(mj, Pi, w, dWm); }
 };
