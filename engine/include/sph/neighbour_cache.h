@@ -4,6 +4,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "sph/domain.h"
@@ -28,6 +29,7 @@ struct ListRequest {
   bool have_rates;           ///< an evaluation under the current parameters set dh/dt
   double since;              ///< time since that evaluation (0 when unknown)
   double dt_last;            ///< the last step's dt (0 before the first)
+  bool by_rows = false;      ///< gather each new list only when need() asks for it (Pipeline::lists_by_rows)
 };
 
 class NeighbourCache {
@@ -37,8 +39,13 @@ class NeighbourCache {
   void prepare(Particles& p, const ListRequest& rq);
   /// Restores the coordinates prepare() moved.
   void rewrap(Particles& p);
-  /// The lists to hand the stages: exact() when they asked for lists filtered to the support.
+  /// The lists to hand the stages: exact() when they asked for lists filtered to the support. With
+  /// ListRequest::by_rows, only the lists need() asked for since the build are there; the others are empty.
   const NeighbourList& lists(bool exact) const { return exact ? exact_ : nl_; }
+  /// Gathers the lists of `rows` (increasing) that are not there yet, as the build would have given them.
+  void need(std::span<const std::uint32_t> rows);
+  /// Every list, gathered where it was not yet (for readers of all lists: checkpoints, the vorticity).
+  const NeighbourList& every_list() const;
   /// The largest h each particle's list covers.
   const std::vector<double>& h_limit() const { return h_limit_; }
   /// The lists must be rebuilt at the next preparation (new parameters, or an h outgrew its list).
@@ -77,13 +84,19 @@ class NeighbourCache {
     int axis;
     double x;
   };
-  NeighbourList nl_;
+  mutable NeighbourList nl_;
   NeighbourList exact_;                         ///< nl_ filtered to the support, for stages that ask for it
   std::vector<double> h_limit_;
   bool valid_ = false;                          ///< nl_ may be reused (while fits())
   bool reuse_ = true;                           ///< set_reuse
   std::array<std::vector<double>, 3> x_built_;  ///< real particles' positions when the lists were built
-  std::vector<double> reach_h_;                 ///< h_limit of every particle and ghost (the build's scratch)
+  std::vector<double> reach_h_;                 ///< h_limit of every particle and ghost, at the build
+  double radius_ = 0.0;                         ///< the build's search radius, times reach_h_
+  // With ListRequest::by_rows: which lists are gathered (a cache of the build: gathering one later gives
+  // the same list, so every_list() may fill it in a const context)
+  mutable std::vector<std::uint8_t> gathered_;
+  mutable std::size_t missing_ = 0;             ///< lists not gathered yet
+  void gather(std::span<const std::uint32_t> rows) const;
   std::vector<Unwrapped> unwrapped_;
   std::int64_t builds_ = 0;
   std::int64_t h_overflows_ = 0;

@@ -2,6 +2,7 @@
 // linked list of seed 002 §3.2), then a gather per particle in a fixed order, so lists are identical for
 // any thread count.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -28,6 +29,15 @@ struct NeighbourList {
 /// All j (real or ghost) with |r_i - r_j| < radius * max(h_i, h_j), for every real i. `h` covers all
 /// particles (ghosts included).
 void build_neighbours(const Particles& p, const std::vector<double>& h, double radius, NeighbourList& out);
+
+/// build_neighbours in two parts, for lists gathered only for the particles that need them (individual
+/// time steps). First the grid of the particles as they are now (kept in out.work), every list empty:
+void build_neighbour_grid(const Particles& p, const std::vector<double>& h, double radius, NeighbourList& out);
+/// then the lists of `rows` (increasing, each still empty), exactly as build_neighbours would have given
+/// them when the grid was built: x holds the real particles' positions then. The lists already there
+/// keep their content; the rows are merged in index order, so the result is the same for any thread count.
+void gather_neighbour_rows(const std::array<std::vector<double>, 3>& x, const std::vector<double>& h, double radius,
+                           std::span<const std::uint32_t> rows, NeighbourList& out);
 
 /// The entries of `wide` (lists built with a larger radius) with |r_i - r_j| < radius * max(h_i, h_j),
 /// each list in its order, into `out`: what build_neighbours(p, h, radius) finds, once every pair within

@@ -58,6 +58,7 @@ Pipeline::Pipeline(const Params& prm, int dim) {
     sets_a_ = sets_a_ || s->sets_acceleration();
     uses_neighbours_ = uses_neighbours_ || s->uses_neighbours();
     exact_lists_ = exact_lists_ || s->exact_lists();
+    every_list_ = every_list_ || s->reads_every_list();
     if (s->projects()) projector_ = s.get();
   }
   drifts_ = ph.xsph == Toggle::On || ph.fpm == FpmType::BurgersUpwind;

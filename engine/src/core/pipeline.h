@@ -25,6 +25,9 @@ class Pipeline {
   bool uses_neighbours() const { return uses_neighbours_; }
   /// Some stage reads every entry of its lists without testing the distance (Stage::exact_lists).
   bool exact_lists() const { return exact_lists_; }
+  /// With individual time steps the lists may be gathered only for the particles an evaluation visits:
+  /// no stage reads every list (Stage::reads_every_list) nor wants exact lists.
+  bool lists_by_rows() const { return uses_neighbours_ && !exact_lists_ && !every_list_; }
   /// The stage that steps the scene by a pressure solve (Stage::projects), or null.
   Stage* projector() const { return projector_; }
 
@@ -33,7 +36,7 @@ class Pipeline {
   FieldSet fields_;
   std::vector<EvolvedPair> evolved_;
   Stage* projector_ = nullptr;
-  bool sets_a_ = false, drifts_ = false, uses_neighbours_ = false, exact_lists_ = false;
+  bool sets_a_ = false, drifts_ = false, uses_neighbours_ = false, exact_lists_ = false, every_list_ = false;
 };
 
 }  // namespace sph

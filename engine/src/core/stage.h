@@ -92,6 +92,10 @@ class Stage {
   /// stages that test the distance (all the SPH loops) skip; a stage that does not gets lists filtered
   /// to the pairs within the support at every evaluation.
   virtual bool exact_lists() const { return false; }
+  /// With individual time steps: false if the stage reads only the lists of the particles
+  /// StageContext::rows and summed_rows give, so that the other lists need not be gathered; true (the
+  /// safe default) for a stage whose loops visit every particle's list.
+  virtual bool reads_every_list() const { return uses_neighbours(); }
   /// True if the stage sets the accelerations (the first force stage); later stages add to them.
   virtual bool sets_acceleration() const { return false; }
   /// Computes. Returns false if a particle's h outgrew its neighbour list: the world rebuilds the list

@@ -11,6 +11,7 @@ class DeclaredStage : public Stage {
   DeclaredStage(std::string_view name, FieldSet needs, std::vector<EvolvedPair> evolves = {})
       : Stage({.name = name, .needs = needs}), evolves_(std::move(evolves)) {}
   std::vector<EvolvedPair> evolves() const override { return evolves_; }
+  bool reads_every_list() const override { return false; }  // runs nothing
 
  private:
   std::vector<EvolvedPair> evolves_;

@@ -188,6 +188,7 @@ void record_stats(StageContext& c, std::size_t bisections) {
 
 class DensitySummation final : public Stage {
  public:
+  bool reads_every_list() const override { return false; }  // the summed rows (active and their neighbours)
   DensitySummation(bool volume, bool fixed)
       : Stage({.name = volume ? "density: volume 1/V = sum W" : "density: summation",
                .needs = {Field::Mass, Field::H},

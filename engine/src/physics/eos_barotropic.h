@@ -11,6 +11,7 @@ namespace sph {
 template <class Model>
 class BarotropicEos final : public Stage {
  public:
+  bool reads_every_list() const override { return false; }  // reads no lists
   BarotropicEos()
       : Stage({.name = Model::name(),
                .needs = {Field::Density},

@@ -10,6 +10,7 @@ namespace {
 
 class EosIdealGas final : public Stage {
  public:
+  bool reads_every_list() const override { return false; }  // reads no lists
   EosIdealGas()
       : Stage({.name = "EOS: ideal gas",
                .needs = {Field::Density, Field::Energy},

@@ -115,6 +115,7 @@ class ForcesCorrected final : public Stage {
                .writes = {Field::SignalSpeed}}),
         stress_(ph.viscosity == ViscType::Laplacian), dim_(dim) {}
   bool sets_acceleration() const override { return true; }
+  bool reads_every_list() const override { return false; }  // the pair loop visits the active rows
 
   bool run(StageContext& c) override {
     const StressLoop loop(c, dim_, stress_);

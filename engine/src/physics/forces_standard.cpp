@@ -82,6 +82,7 @@ class ForcesStandard final : public Stage {
   explicit ForcesStandard(const Physics& ph)
       : Stage(contract(ph)), grad_h_(uses_grad_h(ph)), energy_(ph.energy == Toggle::On), cont_(fuses_continuity(ph)) {}
   bool sets_acceleration() const override { return true; }
+  bool reads_every_list() const override { return false; }  // the pair loop visits the active rows
   bool run(StageContext& c) override {
     // the kernel shape is chosen once here, not per pair
     shape::with_shape(c.kernel.type(), c.p.dim(), [&](auto s) {

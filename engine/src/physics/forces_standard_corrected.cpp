@@ -65,6 +65,7 @@ class ForcesStandardCorrected final : public Stage {
   ForcesStandardCorrected(const Physics& ph, int dim)
       : Stage(contract(ph)), dim_(dim), cont_(fuses_continuity(ph)), xsph_(ph.xsph == Toggle::On) {}
   bool sets_acceleration() const override { return true; }
+  bool reads_every_list() const override { return false; }  // the pair loop visits the active rows
   bool run(StageContext& c) override {
     switch (dim_) {
       case 1: dispatch<1>(c, cont_, xsph_, factors_); break;

@@ -11,6 +11,7 @@ namespace {
 
 class SmoothingEvolved final : public Stage {
  public:
+  bool reads_every_list() const override { return false; }  // reads no lists
   explicit SmoothingEvolved(int dim)
       : Stage({.name = "smoothing length: evolved",
                .needs = {Field::Mass, Field::Density},

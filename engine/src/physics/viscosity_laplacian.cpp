@@ -12,6 +12,7 @@ namespace {
 class ViscosityLaplacian final : public Stage {
  public:
   ViscosityLaplacian() : Stage({.name = "viscosity: Laplacian", .needs = {Field::Density, Field::H}}) {}
+  bool reads_every_list() const override { return false; }  // reads no lists
   double dt_limit(const StageContext& c) const override {
     const double nu = c.prm.visc.nu;
     if (!(nu > 0.0)) return kNoLimit;

@@ -134,13 +134,45 @@ void NeighbourCache::build(Particles& p, const ListRequest& rq) {
   reach_h_.resize(p.total());
   std::copy(h_limit_.begin(), h_limit_.end(), reach_h_.begin());
   for (std::size_t g = 0; g < p.ghost_src.size(); ++g) reach_h_[n + g] = h_limit_[p.ghost_src[g]];
-  build_neighbours(p, reach_h_, radius, nl_);
+  radius_ = radius;
+  if (rq.by_rows) {  // the grid now, each list when an evaluation first visits its particle
+    build_neighbour_grid(p, reach_h_, radius, nl_);
+    gathered_.assign(n, 0);
+    missing_ = n;
+  } else {
+    build_neighbours(p, reach_h_, radius, nl_);
+    gathered_.clear();
+    missing_ = 0;
+  }
   for (int k = 0; k < 3; ++k) x_built_[k].assign(p.x[k].begin(), p.x[k].begin() + static_cast<std::ptrdiff_t>(n));
   valid_ = true;
   ++builds_;
 }
 
+void NeighbourCache::gather(std::span<const std::uint32_t> rows) const {
+  std::vector<std::uint32_t> todo;
+  for (std::uint32_t i : rows)
+    if (!gathered_[i]) { todo.push_back(i); gathered_[i] = 1; }
+  gather_neighbour_rows(x_built_, reach_h_, radius_, todo, nl_);
+  missing_ -= todo.size();
+}
+
+void NeighbourCache::need(std::span<const std::uint32_t> rows) {
+  if (missing_ > 0) gather(rows);
+}
+
+const NeighbourList& NeighbourCache::every_list() const {
+  if (missing_ > 0) {
+    std::vector<std::uint32_t> all(gathered_.size());
+    for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<std::uint32_t>(i);
+    gather(all);
+  }
+  return nl_;
+}
+
 void NeighbourCache::clear() {
+  gathered_.clear();
+  missing_ = 0;
   nl_ = NeighbourList{};
   exact_ = NeighbourList{};
   for (auto& xb : x_built_) xb.clear();
@@ -150,7 +182,7 @@ void NeighbourCache::clear() {
 
 void NeighbourCache::permute(const std::vector<std::uint32_t>& order) {
   const std::size_t n = order.size();
-  permute_neighbours(nl_, order);  // the lists stay valid for the current state
+  permute_neighbours(nl_, order);  // and the grid lists not yet gathered will come from  // the lists stay valid for the current state
   permute_neighbours(exact_, order);
   for (auto& xb : x_built_)
     if (xb.size() == n) {
@@ -160,6 +192,14 @@ void NeighbourCache::permute(const std::vector<std::uint32_t>& order) {
   if (h_limit_.size() == n) {
     const std::vector<double> old = h_limit_;
     for (std::size_t k = 0; k < n; ++k) h_limit_[k] = old[order[k]];
+  }
+  if (gathered_.size() == n) {
+    const std::vector<std::uint8_t> old = gathered_;
+    for (std::size_t k = 0; k < n; ++k) gathered_[k] = old[order[k]];
+  }
+  if (reach_h_.size() >= n) {  // real particles first, then the ghosts (which keep their slots)
+    const std::vector<double> old(reach_h_.begin(), reach_h_.begin() + static_cast<std::ptrdiff_t>(n));
+    for (std::size_t k = 0; k < n; ++k) reach_h_[k] = old[order[k]];
   }
 }
 

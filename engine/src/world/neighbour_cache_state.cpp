@@ -28,7 +28,7 @@ void get_list(ByteReader& r, NeighbourList& nl, std::size_t n, std::size_t total
 }  // namespace
 
 void NeighbourCache::save_lists(ByteWriter& w) const {
-  put_list(w, nl_);
+  put_list(w, every_list());  // complete: a restored run has no grid to gather from
   put_list(w, exact_);
   w.put_bool(valid_);
   for (int k = 0; k < 3; ++k) w.put_vec(x_built_[k]);
@@ -44,6 +44,8 @@ void NeighbourCache::save_rest(ByteWriter& w) const {
 
 void NeighbourCache::restore_lists(ByteReader& r, std::size_t n, std::size_t total) {
   get_list(r, nl_, n, total);
+  gathered_.clear();
+  missing_ = 0;
   get_list(r, exact_, n, total);
   valid_ = r.get_bool();
   for (int k = 0; k < 3; ++k) {

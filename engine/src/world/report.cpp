@@ -180,7 +180,7 @@ Snapshot Report::snapshot() const {
   if (in_.cfg.params.physics.fpm != FpmType::None)  // Burgers' u first: what a viewer shows by default
     std::stable_partition(s.fields.begin(), s.fields.end(), [](const SnapshotField& f) { return f.name == "vx"; });
   if (s.dim == 2 && in_.p.has(Field::Density)) {
-    const std::vector<double> w = vorticity(in_.p, in_.kernel, in_.lists.lists(false), in_.domain);
+    const std::vector<double> w = vorticity(in_.p, in_.kernel, in_.lists.every_list(), in_.domain);
     add("vorticity", "vorticity dv_y/dx - dv_x/dy", [&](std::size_t i) { return w[i]; });
   }
   if (walls) add("kind", "particle kind (0 fluid, 1 wall)", [&](std::size_t i) { return double(in_.p.kind[i]); });

@@ -37,7 +37,7 @@ StageContext World::context() const {
 
 void World::prepare_neighbours() {
   const ListRequest rq{domain_, kernel_, cfg_.params.physics.smoothing, start_shared_, pipeline_->exact_lists(),
-                       t_last_eval_ >= 0.0, since_, dt_last_};
+                       t_last_eval_ >= 0.0, since_, dt_last_, block_ != nullptr && pipeline_->lists_by_rows()};
   try {
     lists_.prepare(p_, rq);
   } catch (const GhostOverflow& e) {
@@ -58,7 +58,13 @@ void World::evaluate(double t_eval) {
   for (int attempt = 0;; ++attempt) {
     auto t0 = std::chrono::steady_clock::now();
     if (pipeline_->uses_neighbours()) prepare_neighbours();  // pure N-body: no lists at all
-    if (active_) active_->mark_summed(p_, lists_.lists(pipeline_->exact_lists()));
+    if (active_) {  // the lists of the active particles, then of those whose density they read
+      lists_.need(active_->active());
+      active_->mark_summed(p_, lists_.lists(pipeline_->exact_lists()));
+      lists_.need(active_->summed());
+    } else {
+      lists_.every_list();
+    }
     timings_[0].seconds += since(t0);
     ++timings_[0].calls;
     if (!pipeline_->sets_acceleration())
