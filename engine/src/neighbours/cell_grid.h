@@ -45,7 +45,7 @@ inline double gap(const CellGrid& g, int k, int c, double x) {
 /// The grid's arrays are read through local pointers, which the stores cannot alias.
 /// Particle i sits at (xi, yi, zi), its position when the grid was built.
 inline std::size_t gather_neighbours(const CellGrid& g, double xi, double yi, double zi, double hi, double radius,
-                              std::vector<std::uint32_t>& out, std::size_t used) {
+                                     std::vector<std::uint32_t>& out, std::size_t used) {
   const double* const sx = g.sx.data();
   const double* const sy = g.sy.data();
   const double* const sz = g.sz.data();

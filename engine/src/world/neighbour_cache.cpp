@@ -182,7 +182,8 @@ void NeighbourCache::clear() {
 
 void NeighbourCache::permute(const std::vector<std::uint32_t>& order) {
   const std::size_t n = order.size();
-  permute_neighbours(nl_, order);  // and the grid lists not yet gathered will come from  // the lists stay valid for the current state
+  // the lists stay valid for the current state; the kept grid is renumbered too, for the lists not yet gathered
+  permute_neighbours(nl_, order);
   permute_neighbours(exact_, order);
   for (auto& xb : x_built_)
     if (xb.size() == n) {

@@ -216,6 +216,7 @@ void World::after_step() {
   for (const auto& s : pipeline_->stages()) due = due || s->acts_after(cfg_.params, step_);
   if (!due) return;
   prepare_neighbours();  // for the state the step ended in
+  lists_.every_list();   // an action may visit every particle
   StageContext ctx = context();
   for (const auto& s : pipeline_->stages())
     if (s->acts_after(cfg_.params, step_)) {
