@@ -147,12 +147,8 @@ void World::step(double dt_max) {
   } restore{full};
   omp_set_num_threads(last_team_);
   const auto t0 = std::chrono::steady_clock::now();
-  const std::int64_t updates0 = updates_;
   advance(dt_max);
-  // the time per particle updated: with individual time steps one sub-step updates a few particles and
-  // the next all of them, and the teams must be compared on equal work
-  const double work = static_cast<double>(std::max<std::int64_t>(1, updates_ - updates0));
-  if (adaptive_threads_) team_->record(since(t0) / work);
+  if (adaptive_threads_) team_->record(since(t0));
 }
 
 void World::advance(double dt_max) {
