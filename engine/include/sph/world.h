@@ -43,7 +43,8 @@ class World {
   /// The scene (config().scene) and its resolved run parameters.
   const RunConfig& config() const { return cfg_; }
 
-  /// One step of the adaptive (or fixed) dt, shortened to at most dt_max. Throws DivergedError. Runs on
+  /// One step of the adaptive (or fixed) dt, shortened to at most dt_max: to dt_max itself, or to half
+  /// of it when a step would leave a sliver before dt_max (integrators/landing_step.h). Throws DivergedError. Runs on
   /// a team of at most the caller's OpenMP thread count: by default the faster of one thread and the
   /// full team, measured every few hundred steps (core/team_size.h); results are the same either way.
   void step(double dt_max = 1e300);
@@ -51,7 +52,7 @@ class World {
   void set_adaptive_threads(bool on) { adaptive_threads_ = on; }
   /// The team the last step ran on.
   int last_team() const { return last_team_; }
-  /// Steps until time t (the last step is shortened to land on t exactly); with `interrupted`, asks it
+  /// Steps until time t, landing on it exactly as step(t - time()) does; with `interrupted`, asks it
   /// before each step and returns false when it said stop short of t (the GUI's run B catching up with
   /// run A takes the user's commands between its steps).
   bool advance_to(double t, const std::function<bool()>& interrupted = {});

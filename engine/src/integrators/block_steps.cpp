@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "core/parallel.h"
+#include "integrators/landing_step.h"
 
 namespace sph {
 namespace {
@@ -69,7 +70,7 @@ void BlockSteps::begin_block(PhaseSpace& s, const Particles& p, const Hooks& hoo
   const std::size_t n = s.n;
   std::vector<double> want;
   hooks.want(want);
-  tau_ = std::min(dt_max, block_length(want)) / static_cast<double>(ticks_);
+  tau_ = landing_step(block_length(want), dt_max) / static_cast<double>(ticks_);
   tick_ = 0;
   len_.assign(n, ticks_);
   begin_.assign(n, 0);

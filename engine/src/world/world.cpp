@@ -14,6 +14,7 @@
 #include "core/stages.h"
 #include "core/team_size.h"
 #include "integrators/block_steps.h"
+#include "integrators/landing_step.h"
 
 namespace sph {
 namespace {
@@ -164,7 +165,7 @@ void World::advance(double dt_max) {
 
 double World::step_length(double dt_max) {
   const double dt_free = next_dt();
-  const double dt = std::min(dt_free, dt_max);
+  const double dt = landing_step(dt_free, dt_max);
   checks_.check_dt(dt, dt_free, cfg_.params.time.dt <= 0.0, p_, step_, t_);
   return dt;
 }
@@ -230,15 +231,7 @@ void World::after_step() {
 bool World::advance_to(double t_target, const std::function<bool()>& interrupted) {
   while (t_ < t_target * (1.0 - 1e-14) - 1e-300) {
     if (interrupted && interrupted()) return false;
-    const double remaining = t_target - t_;
-    double dt = next_dt();
-    // land exactly on the target; avoid a sliver of a step at the end. A step within rounding of the
-    // remaining time is that time: a run following another one of the same dt (an A/B run B, a sweep run)
-    // must take its steps, not two halves of each (7.8e-4 in rho on Sod when its remaining time came out
-    // one rounding above its dt)
-    if (dt >= remaining * (1.0 - 1e-10)) dt = remaining;
-    else if (dt > 0.5 * remaining) dt = 0.5 * remaining;
-    step(dt);
+    step(t_target - t_);  // the steps of `sph run` towards its output times (integrators/landing_step.h)
     if (t_ > t_target) t_ = t_target;
   }
   // A target within the loop's tolerance (1e-14 relative; e.g. run A's sliver of a last step onto t_end)
