@@ -107,14 +107,14 @@ SPH_SCENE(170, evrard_scene) {
   d.gravity.eps = 0.05;  // seed 003 §3.4.1
   // The fast multipole method: to t = 3 on two threads 17.6 s against the tree's 28.1 s, |dE/E| 3.9e-4
   // against 4.3e-4 (seed 1); physics.gravity = tree stays available (and its GUI overlay). Without the
-  // relative guard, at theta = 0.7: 1.45x fewer seconds, max |dE/E| 3.0e-4, 3.5e-4, 3.3e-4 for seeds
+  // relative guard, at theta = 0.7: 1.49x less wall time, max |dE/E| 3.0e-4, 3.5e-4, 3.3e-4 for seeds
   // 1, 2, 3 (the guard's 3.9e-4, 4.2e-4, 4.0e-4), RMS force error 8.7e-4 instead of 1.2e-4 (N = 4096,
   // gravity_fmm_bench --sphere r1). The energy error is the leapfrog's at time.cfl = 0.3 (cfl 0.1:
   // 1.1e-4, the force error's floor; theta 0.8: 2.5e-4, 0.6: 3.4e-5).
   d.physics.gravity = GravityType::Fmm;
   d.gravity.fmm_theta = 0.7;
   d.gravity.fmm_tol = 0.0;
-  s.energy_bound = 2e-3;  // measured to t = 3: 3.9e-4, the leapfrog error at the bounce (time.cfl / 2: / 3.8)
+  s.energy_bound = 2e-3;  // measured to t = 3: 3.0e-4, the leapfrog error at the bounce (time.cfl / 2: / 3.0)
   d.gas.gamma = 5.0 / 3.0;
   set_run_times(d, 3.0, 0.1);
   s.allow(Slot::Eos, {"ideal_gas"});

@@ -44,9 +44,10 @@ class World {
   const RunConfig& config() const { return cfg_; }
 
   /// One step of the adaptive (or fixed) dt, shortened to at most dt_max: to dt_max itself, or to half
-  /// of it when a step would leave a sliver before dt_max (integrators/landing_step.h). Throws DivergedError. Runs on
-  /// a team of at most the caller's OpenMP thread count: by default the faster of one thread and the
-  /// full team, measured every few hundred steps (core/team_size.h); results are the same either way.
+  /// of dt_max where a whole step would leave a sliver before it (integrators/landing_step.h). Throws
+  /// DivergedError. Runs on a team of at most the caller's OpenMP thread count: by default the faster of
+  /// one thread and the full team, measured every few hundred steps (core/team_size.h); results are the
+  /// same either way.
   void step(double dt_max = 1e300);
   /// Off: every step uses the caller's full OpenMP team (tests comparing thread counts).
   void set_adaptive_threads(bool on) { adaptive_threads_ = on; }
