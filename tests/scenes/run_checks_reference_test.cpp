@@ -96,6 +96,15 @@ TEST(ReferenceGuard, AnErrorBeyondItsBoundIsWarnedAboutNamingTheColumnOnlyWhileI
   ASSERT_NE(w, nullptr);
   EXPECT_NE(w->message.find("L1_rho = 0.02 at t = 0.12, beyond this scene's bound 0.0045"), std::string::npos)
       << w->message;
+  EXPECT_EQ(w->message.find("differs"), std::string::npos) << w->message;  // at the scene's defaults
+  // a run away from the defaults, where the bound was measured, says how
+  const RunConfig m6 = scene("sod", "kernel.type", "M6");
+  RunChecks changed;
+  changed.check_error_bounds(m6, ref.get(), cols, v, 12, 0.12);
+  ASSERT_NE(find(changed, "accuracy:L1_rho"), nullptr);
+  EXPECT_NE(find(changed, "accuracy:L1_rho")->message.find("; this run differs from them in kernel.type=M6)"),
+            std::string::npos)
+      << find(changed, "accuracy:L1_rho")->message;
 
   const RunConfig poly = scene("polytrope");  // profile_err is bounded from t = 1 (the relaxation before)
   const auto pref = poly.scene->reference(poly.params, poly.values);
