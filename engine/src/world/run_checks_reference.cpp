@@ -33,7 +33,9 @@ double value_of(const RunConfig& cfg, const SceneValues& values, const std::stri
 
 /// Where this run's values differ from the scene's defaults, at which its bounds were measured, as
 /// "; this run differs from them in KEY=VALUE, ... (and N more)" ("" at the defaults): a warning on a
-/// variant (elliptical_drop_standard.json) or after a --set says which choice it comes with.
+/// variant (elliptical_drop_standard.json) or after a --set says which choice it comes with. The end
+/// and the output interval are left out: they move no error, and a run resumed with another --until
+/// must write the warning of the run that never stopped.
 std::string changed_from_defaults(const RunConfig& cfg) {
   std::vector<std::string> diff;
   try {
@@ -41,6 +43,9 @@ std::string changed_from_defaults(const RunConfig& cfg) {
   } catch (const std::exception&) {
     return "";  // a scene without registered defaults
   }
+  std::erase_if(diff, [](const std::string& d) {
+    return d.starts_with("time.t_end=") || d.starts_with("time.dt_out=");
+  });
   constexpr std::size_t kShown = 4;
   std::string out;
   for (std::size_t i = 0; i < diff.size() && i < kShown; ++i)
