@@ -81,9 +81,15 @@ double velocity_of(const Particles& p, std::size_t j, int k) {
   return (p.ghost_flip[g] >> k) & 1u ? -v : v;
 }
 
+/// The real particle behind index j: itself, or a ghost's source.
+std::size_t source_of(const Particles& p, std::size_t j) { return j < p.size() ? j : p.ghost_src[j - p.size()]; }
+
 /// Vorticity dv_y/dx - dv_x/dy of the fluid (2D), from the standard SPH gradient
 /// dv_k/dx_l ~ sum_b V_b (v_b - v_a)_k grad_l W_ab(h_a), over the last evaluation's neighbours (the
-/// nearest periodic image of each: a particle may have wrapped since the lists were built).
+/// nearest periodic image of each: a particle may have wrapped since the lists were built). A ghost's
+/// mass and density are its source's: the ghosts' copies are only as current as the last complete
+/// evaluation, and a state saved from a run that stopped inside one (an h that outgrew every list
+/// rebuild) holds new ghosts with no density yet, which made the vorticity NaN in a frame that loaded it.
 std::vector<double> vorticity(const Particles& p, const Kernel& K, const NeighbourList& nl, const Domain& d) {
   const double Lx = d.bc[0] == Boundary::Periodic ? d.length(0) : 0.0;
   const double Ly = d.bc[1] == Boundary::Periodic ? d.length(1) : 0.0;
@@ -101,7 +107,8 @@ std::vector<double> vorticity(const Particles& p, const Kernel& K, const Neighbo
       if (Ly > 0.0) dy -= Ly * std::nearbyint(dy / Ly);
       const double r = std::sqrt(dx * dx + dy * dy);
       if (r == 0.0 || r >= K.support() * h[i]) continue;
-      const double f = m[j] / rho[j] * K.dWdr(r, h[i]) / r;  // grad W = f (dx, dy)
+      const std::size_t b = source_of(p, j);
+      const double f = m[b] / rho[b] * K.dWdr(r, h[i]) / r;  // grad W = f (dx, dy)
       s += (velocity_of(p, j, 1) - p.v[1][i]) * f * dx - (velocity_of(p, j, 0) - p.v[0][i]) * f * dy;
     }
     w[i] = s;
