@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "core/parallel.h"
+#include "physics/dfsph_relaxation.h"
 #include "sph/kernel_shapes.h"
 
 namespace sph {
@@ -15,11 +16,6 @@ namespace {
 /// Fluid particles with fewer neighbours than this share of a full kernel's (the free surface) are left
 /// out of the divergence solve, as in SPlisHSPlasH (20 of 33 in 3D, 7 of 13 in 2D).
 constexpr double kFullShare = 0.6;
-/// Relaxation of the Jacobi updates: alpha takes the neighbours' kappa equal to a's, which holds for a
-/// smooth pressure but not for a checkerboard one, whose growth the relaxation must outweigh. IISPH
-/// (Ihmsen et al. 2014) relaxes by 0.5, enough in 2D; in 3D (some 60 neighbours instead of 20) the
-/// hydrostatic_tank_3d's first solve diverged at 0.5 and converges at 0.3 (0.2, 0.1: slower, no better).
-constexpr double kRelax2d = 0.5, kRelax3d = 0.3;
 
 /// Serial sum and maximum of the first n entries: the same for any thread count.
 std::pair<double, double> sum_max(const std::vector<double>& e, std::size_t n) {
@@ -94,6 +90,13 @@ void DfsphSolver::prepare(const StageContext& c) {
     }
   });
   prepare_walls(c);
+  // the sweeps' relaxation for this kernel and eta (a pure function of them: recomputed only when they change)
+  if (c.kernel.type() != relax_kernel_ || d != relax_dim_ || c.eta != relax_eta_) {
+    relax_kernel_ = c.kernel.type();
+    relax_dim_ = d;
+    relax_eta_ = c.eta;
+    relax_ = dfsph_relaxation(c.kernel, c.eta);
+  }
 }
 
 double DfsphSolver::divergence_of(std::size_t a, const double* const v[3]) const {
@@ -170,7 +173,7 @@ int DfsphSolver::sweeps(StageContext& c, std::vector<double>& total, double dt, 
                         bool& done) {
   const std::size_t n = c.p.fluid();
   kappa_.resize(n);
-  const double relax = c.p.dim() == 3 ? kRelax3d : kRelax2d;
+  const double relax = relax_;
   int it = 0;
   while (!(done = converged(c, total, dt, t)) && it < count) {
 #pragma omp parallel for schedule(static) if (threaded_)

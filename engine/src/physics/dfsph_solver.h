@@ -4,7 +4,8 @@
 //   alpha_a = rho_a / (|sum_b g_ab|^2 + sum_{b fluid} |g_ab|^2)                      (their eq. 11)
 //   density:    source_a = rho_a + dt sum_b (v_a - v_b) . g_ab - rho0                  (predicted compression)
 //   divergence: source_a = dt sum_b (v_a - v_b) . g_ab                                  (dt Drho/Dt)
-//   kappa_a <- max(0, kappa_a + w source_a alpha_a / dt^2) (w = 1/2 in 2D, 0.3 in 3D: relaxed Jacobi),
+//   kappa_a <- max(0, kappa_a + w source_a alpha_a / dt^2) (relaxed Jacobi: w from the kernel's width, at
+//   most 1/2 in 2D and 0.3 in 3D, physics/dfsph_relaxation.h),
 //   v_a -= dt sum_b (kappa_a/rho_a + kappa_b/rho_b) g_ab for the change of kappa.
 // kappa >= 0 (projected Jacobi: a liquid takes no tension), so a free surface's particles, whose
 // summation density is below rho0, stay free; a solve ends when the mean of the compression (and of the
@@ -100,6 +101,10 @@ class DfsphSolver {
   std::vector<std::uint8_t> act_;  ///< 1: in the Krylov solve's linear system (under pressure or compressed)
   std::vector<double> x_, b_, r_, rh_, pv_, ph_, vv_, sv_, sh_, tv_, dv_[3], kwl_;  ///< BiCGStab's vectors
   bool threaded_ = false;                           ///< loops in a thread team (core/parallel.h)
+  double relax_ = 0.5;                              ///< the sweeps' relaxation w (dfsph_relaxation.h)
+  KernelType relax_kernel_ = KernelType::M4;        ///< the kernel, dimension and eta relax_ is for
+  int relax_dim_ = 0;
+  double relax_eta_ = 0.0;
   double last_mean_ = 0.0, last_max_ = 0.0;         ///< the last solve's mean and largest error [dimensionless]
 };
 
