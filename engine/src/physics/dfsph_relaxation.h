@@ -16,7 +16,9 @@
 namespace sph {
 
 /// The largest lambda(k) over the lattice's Brillouin zone for kernel K (its dimension) at h = eta dx
-/// [dimensionless]: the mode a Jacobi sweep amplifies most.
+/// [dimensionless]: the mode a Jacobi sweep amplifies most. A sum over the pairs at each of 25^3 wave
+/// vectors in 3D (0.11 s for M6 at h = 1.3 dx, 2.3 s at the largest eta, 4); the solver keeps it until the
+/// kernel or eta changes.
 double dfsph_lattice_stiffness(const Kernel& K, double eta);
 
 /// The sweeps' relaxation: 1.5 / lambda_max (w lambda_max = 1.5, a quarter below divergence), at most
