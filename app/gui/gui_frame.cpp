@@ -3,6 +3,7 @@
 #include "gui_gl.h"  // first: GL prototypes before any other glcorearb.h include
 
 #include "gui_frame.h"
+#include "layout_check.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -176,7 +177,12 @@ bool display_frame(MainLoop& l) {
   const Rect view_rect = to_framebuffer(L.view);
   l.last_view_rect = view_rect;
   const std::uint64_t ui = draw_data_hash(*ImGui::GetDrawData());
-  const bool last = (o.quit_after_frames > 0 && l.stats.frames() + 1 >= o.quit_after_frames) || l.end_shown;
+  bool last = (o.quit_after_frames > 0 && l.stats.frames() + 1 >= o.quit_after_frames) || l.end_shown;
+  // the layout report reads a settled frame: one where no window still waits for its scroll bar or size
+  if (last && o.layout_report && !layout_settled() && l.settle_frames < 10) {
+    last = false;
+    ++l.settle_frames;
+  }
   const render::FrameScene scene = shown ? view_scene(*shown) : render::FrameScene{};
   const bool draw = o.always_redraw || l.stats.frames() < 2 || ui != l.last_ui || fw != l.last_fw ||
                     fh != l.last_fh || l.window.take_damage() ||

@@ -35,6 +35,7 @@ struct MainLoop {
   std::uint64_t last_ui = 0;  // draw-data fingerprint of the last drawn frame
   int last_fw = 0, last_fh = 0;
   bool end_shown = false;     // --quit-at-end: the view showed the state at t_end (quit at the next frame)
+  int settle_frames = 0;      // --layout-report: frames added at the end for the layout to settle (at most 10)
   Rect last_view_rect{};      // where the view was drawn last frame [framebuffer px]
 };
 

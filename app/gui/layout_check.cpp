@@ -100,6 +100,17 @@ bool overlap(const Glyph& a, const Glyph& b) {
 
 }  // namespace
 
+bool layout_settled() {
+  const ImGuiContext* g = ImGui::GetCurrentContext();
+  if (g == nullptr) return true;
+  for (const ImGuiWindow* w : g->Windows) {
+    if (!w->Active || w->Hidden) continue;
+    const ImVec2 drawn(w->DC.CursorMaxPos.x - w->DC.CursorStartPos.x, w->DC.CursorMaxPos.y - w->DC.CursorStartPos.y);
+    if (std::abs(drawn.x - w->ContentSize.x) > 1.f || std::abs(drawn.y - w->ContentSize.y) > 1.f) return false;
+  }
+  return true;
+}
+
 LayoutReport check_layout(const ImDrawData& dd, const ImFontAtlas& atlas) {
   const GlyphTable table = glyph_table(atlas);
   std::vector<Glyph> glyphs;

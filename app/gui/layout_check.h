@@ -27,6 +27,12 @@ struct LayoutReport {
 /// Checks the frame's draw data (the current ImGui context's last frame: its windows tell which scroll).
 LayoutReport check_layout(const ImDrawData& dd, const ImFontAtlas& atlas);
 
+/// Whether the current ImGui context's last frame laid out its windows as the next will: every active window's
+/// content drawn this frame has the size its layout was made for. Dear ImGui sizes scroll bars and
+/// auto-fitting children from the previous frame's content, so the frame where content first appears (a run's
+/// first state) shows them a frame late; the layout report waits for a settled frame.
+bool layout_settled();
+
 /// "N glyphs, C clipped, O overlapping" and the first few problems, one per line.
 std::string layout_text(const LayoutReport& r, std::size_t max_listed = 8);
 

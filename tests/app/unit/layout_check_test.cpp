@@ -82,5 +82,15 @@ TEST_F(LayoutCheck, TheFirstFrameOfAWindowThatWillScrollIsNotAFault) {
   EXPECT_TRUE(frame(body, true, 1).clipped.empty());
 }
 
+TEST_F(LayoutCheck, AFrameIsSettledOnceItsWindowsHaveTheSizeOfTheirContent) {
+  const auto body = [] {
+    for (int k = 0; k < 20; ++k) ImGui::Text("row %d", k);
+  };
+  frame(body, true, 1);  // the content first appears: the window was laid out for none
+  EXPECT_FALSE(layout_settled());
+  frame(body, true, 1);  // the next frame: laid out for it
+  EXPECT_TRUE(layout_settled());
+}
+
 }  // namespace
 }  // namespace sph::gui
