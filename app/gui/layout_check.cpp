@@ -32,15 +32,10 @@ GlyphTable glyph_table(const ImFontAtlas& atlas) {
 
 bool starts_with(const char* s, const char* prefix) { return s && std::string(s).rfind(prefix, 0) == 0; }
 
-/// Whether the draw list's window, or a window it lies in, shows a vertical scroll bar, or will from the next
-/// frame: Dear ImGui decides the bar from the last frame's content, so the first frame whose content outgrows
-/// the window (evrard's Diagnostics at ui scale 3 when its first state arrives) shows its lines cut without it.
+/// Whether the draw list's window, or a window it lies in, shows a vertical scroll bar.
 bool scrolls(const char* owner) {
-  for (const ImGuiWindow* w = ImGui::FindWindowByName(owner); w != nullptr; w = w->ParentWindow) {
+  for (const ImGuiWindow* w = ImGui::FindWindowByName(owner); w != nullptr; w = w->ParentWindow)
     if (w->ScrollbarY) return true;
-    const bool may = !(w->Flags & ImGuiWindowFlags_NoScrollbar);
-    if (may && w->DC.CursorMaxPos.y > w->InnerRect.Max.y + 0.5f) return true;
-  }
   return false;
 }
 

@@ -1,8 +1,7 @@
 // Text layout checks on what Dear ImGui drew (the layout tests): every glyph quad of a frame's draw data,
 // found by its texture coordinates in the font atlas, is checked for being cut by its clip rectangle
 // (horizontally: a label cut by its column or window; vertically only in windows without a vertical scroll
-// bar, such as the status line: a window that scrolls, or will from the next frame, cuts its lines at its
-// edge by design) and for overlapping a glyph of other text of its window (a dialog lies over the
+// bar, such as the status line: a window that scrolls cuts its lines at its edge by design) and for overlapping a glyph of other text of its window (a dialog lies over the
 // windows by design). Tooltips, which follow the mouse, are left out.
 #pragma once
 #include <string>

@@ -160,7 +160,7 @@ TEST(EosDfsph, WideKernelsKeepTheDensityAndTheWaterAtRest) {
     std::printf("drop with %s at h = %s dx: worst mean density error %.3g\n", kernel, eta, worst);
     EXPECT_LE(worst, cfg.params.liquid.dfsph_eta) << kernel;
   }
-  // the 3D tank (w lambda_max 2.2 at the old 0.3 in 3D: it diverged before t = 0.1)
+  // the 3D tank (w lambda_max 2.2 at the old 0.3 in 3D: at dx 0.05 it diverged before t = 0.1)
   RunConfig cfg = RunConfig::from_scene("hydrostatic_tank_3d");
   for (const auto& [k, v] : {std::pair{"physics.eos", "dfsph"}, {"physics.density", "summation"},
                              {"physics.smoothing", "fixed"}, {"physics.force", "standard"},

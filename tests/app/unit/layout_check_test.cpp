@@ -1,7 +1,7 @@
 // The text layout check on Dear ImGui's draw data (app/gui/layout_check.h), on frames built without a
 // window: a label cut by its window's edge and text drawn over text are found, with their window and
-// text; a tidy window has neither; a line cut at the bottom of a window with a scroll bar, or of one whose
-// first frame outgrew it (the bar comes a frame later), is not a fault.
+// text; a tidy window has neither; a line cut at the bottom of a window with a scroll bar is not a fault; the
+// frame where content first outgrows a window is not settled (its bar comes a frame later), the next one is.
 #include "layout_check.h"
 
 #include <gtest/gtest.h>
@@ -71,15 +71,6 @@ TEST_F(LayoutCheck, ALineCutAtTheBottomOfAScrollingWindowIsNotAFault) {
   };
   EXPECT_FALSE(frame(body).clipped.empty());       // a window without a scroll bar: cut
   EXPECT_TRUE(frame(body, true).clipped.empty());  // one with a scroll bar: scrolled out of view, not cut
-}
-
-TEST_F(LayoutCheck, TheFirstFrameOfAWindowThatWillScrollIsNotAFault) {
-  // the frame where the content first outgrows the window has no scroll bar yet (evrard's Diagnostics when
-  // its first state arrives); the next one has it
-  const auto body = [] {
-    for (int k = 0; k < 20; ++k) ImGui::Text("row %d", k);
-  };
-  EXPECT_TRUE(frame(body, true, 1).clipped.empty());
 }
 
 TEST_F(LayoutCheck, AFrameIsSettledOnceItsWindowsHaveTheSizeOfTheirContent) {
