@@ -6,7 +6,6 @@
 // - the field `level` shows each particle's step level, the blast's centre on the shortest steps;
 // - parameters it cannot step are refused, naming time.levels and the key in the way.
 #include <gtest/gtest.h>
-#include <omp.h>
 
 #include <cmath>
 #include <string>
@@ -14,6 +13,7 @@
 
 #include "sph/config.h"
 #include "sph/world.h"
+#include "world_steps_util.h"
 
 namespace sph {
 namespace {
@@ -48,33 +48,10 @@ TEST(WorldBlock, SedovReachesTheGlobalStepsResultWithFewerUpdates) {
   EXPECT_GE(static_cast<double>(global.updates), 3.0 * static_cast<double>(block.updates));
 }
 
-TEST(WorldBlock, SameStepsOnAnyThreadCount) {
-  const RunConfig cfg = sedov("40", 5);
-  const int saved = omp_get_max_threads();
-  std::vector<std::string> states;
-  for (int threads : {1, 2}) {
-    omp_set_num_threads(threads);
-    World w(cfg);
-    w.set_adaptive_threads(false);
-    for (int k = 0; k < 70; ++k) w.step();
-    states.push_back(w.save_state());
-  }
-  omp_set_num_threads(saved);
-  EXPECT_TRUE(states[0] == states[1]) << "the states differ between one and two threads";
-}
+TEST(WorldBlock, SameStepsOnAnyThreadCount) { test::expect_same_steps_on_one_and_two_threads(sedov("40", 5), 70); }
 
 TEST(WorldBlock, CheckpointInsideABlockResumesBitwise) {
-  const RunConfig cfg = sedov("40", 5);
-  World whole(cfg), first(cfg);
-  for (int k = 0; k < 90; ++k) whole.step();
-  for (int k = 0; k < 45; ++k) first.step();  // past a reordering (every 16 steps), inside a block
-  const std::string saved = first.save_state();
-  World resumed(cfg);
-  resumed.restore_state(saved, "test");
-  EXPECT_EQ(resumed.save_state(), saved);
-  for (int k = 0; k < 45; ++k) resumed.step();
-  EXPECT_EQ(resumed.time(), whole.time());
-  EXPECT_TRUE(resumed.save_state() == whole.save_state()) << "the states differ after the restore";
+  test::expect_resume_bitwise(sedov("40", 5), 45, 90);  // past a reordering (every 16 steps), inside a block
 }
 
 TEST(WorldBlock, LevelFieldShowsTheHotCentreOnTheShortestSteps) {

@@ -18,7 +18,7 @@ struct CheckpointError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-inline constexpr std::uint32_t kCheckpointVersion = 2;  // 2: individual time steps, updates
+inline constexpr std::uint32_t kCheckpointVersion = 3;  // 2: individual time steps, updates; 3: self-gravity's E_pot
 
 struct Checkpoint {
   std::string config_json;  ///< RunConfig::to_json() of the run

@@ -133,6 +133,9 @@ class Stage {
   virtual std::vector<std::vector<double>> saved_state() const { return {}; }
   /// Takes back what saved_state() gave (of a stage of the same type). Returns false if it does not fit.
   virtual bool restore_state(const std::vector<std::vector<double>>& s) { return s.empty(); }
+  /// Follows a new storage order of the particles (new index k holds old order[k], fluid first): for a
+  /// stage that keeps values per particle between evaluations.
+  virtual void permute(std::span<const std::uint32_t> /*order*/) {}
 
  protected:
   explicit Stage(StageContract contract) : contract_(contract) {}

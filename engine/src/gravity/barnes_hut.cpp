@@ -67,7 +67,8 @@ void BarnesHutTree::visit(std::size_t t, const Opening& op, double allowed, std:
   }
 }
 
-void BarnesHutTree::walk(const Sources& s, const PairLaw& law, double theta, const Guard& guard, Result& out) const {
+void BarnesHutTree::walk(const Sources& s, const PairLaw& law, double theta, const Guard& guard, Result& out,
+                         const std::uint8_t* active) const {
   const std::size_t n = s.n;
   const Opening op = opening(law, theta);
   const double e2 = op.kernel ? 0.0 : law.eps2;  // softening of the multipoles (kernel: cells are beyond it)
@@ -78,6 +79,7 @@ void BarnesHutTree::walk(const Sources& s, const PairLaw& law, double theta, con
     stack.reserve(512);
 #pragma omp for schedule(dynamic, 64)
     for (std::size_t t = 0; t < n; ++t) {  // targets in tree order
+      if (active && !active[order_[t]]) continue;  // not a sink: its results are kept from before
       const double xi = sx_[0][t], yi = sx_[1][t], zi = sx_[2][t], hi = sh_[t], mi = sm_[t];
       // the cell-error bound this target tolerates (per unit G): tol |a_i|, |a_i| from the estimate pass
       const double allowed = guard.a_est ? guard.tol * (*guard.a_est)[t] : 1e300;
@@ -155,13 +157,13 @@ std::vector<CellUse> BarnesHutTree::interactions(const Sources& s, const PairLaw
 void BarnesHutTree::evaluate(const Sources& s, const PairLaw& law, double G, double theta, Result& out,
                              double tol) const {
   const std::size_t n = s.n;
-  out.resize(n);
+  const std::uint8_t* active = out.begin(s) ? s.active : nullptr;
   if (nodes_.empty()) return;
   walked_.resize(n);
   Guard guard;
   if (theta > 0.0 && tol > 0.0) {
     // the estimate pass: |a_i| at the coarse opening angle kEstimateTheta, for the relative guard
-    walk(s, law, kEstimateTheta, guard, walked_);
+    walk(s, law, kEstimateTheta, guard, walked_, active);
     a_est_.resize(n);
     for (std::size_t t = 0; t < n; ++t)
       a_est_[t] = std::sqrt(walked_.a[0][t] * walked_.a[0][t] + walked_.a[1][t] * walked_.a[1][t] +
@@ -172,8 +174,8 @@ void BarnesHutTree::evaluate(const Sources& s, const PairLaw& law, double G, dou
     out.node_terms = walked_.node_terms;
     walked_.resize(n);
   }
-  walk(s, law, theta, guard, walked_);
-  add_from_tree_order(walked_, order_, G, out);
+  walk(s, law, theta, guard, walked_, active);
+  add_from_tree_order(walked_, order_, G, out, active);
 }
 
 }  // namespace sph::gravity

@@ -72,8 +72,9 @@ class BarnesHutTree {
   const std::array<std::vector<double>, 3>& sorted_x() const { return sx_; }
   const std::vector<double>& sorted_m() const { return sm_; }
   const std::vector<double>& sorted_h() const { return sh_; }
-  /// Accelerations and potentials of every particle from the tree at opening angle theta, with the
-  /// relative guard at tolerance tol (0: none; then one walk).
+  /// Accelerations and potentials of every particle (of the sinks s.active names, the others keeping
+  /// out's values; Result::begin) from the tree at opening angle theta, with the relative guard at
+  /// tolerance tol (0: none; then one walk).
   void evaluate(const Sources& s, const PairLaw& law, double G, double theta, Result& out,
                 double tol = kDefaultTol) const;
   /// The cells the walk of particle i (storage index) takes at theta and tol, in walk order: what the
@@ -97,8 +98,10 @@ class BarnesHutTree {
   template <class OnCell, class OnLeaf>
   void visit(std::size_t t, const Opening& op, double allowed, std::vector<std::uint32_t>& stack, OnCell&& on_cell,
              OnLeaf&& on_leaf) const;
-  /// One walk for every target, results per unit G in tree order (added to out's term counts).
-  void walk(const Sources& s, const PairLaw& law, double theta, const Guard& guard, Result& out) const;
+  /// One walk for every target (each sink flagged in `active`, storage order, when not null), results per
+  /// unit G in tree order (added to out's term counts).
+  void walk(const Sources& s, const PairLaw& law, double theta, const Guard& guard, Result& out,
+            const std::uint8_t* active = nullptr) const;
   void split(const Sources& s, std::uint32_t node, std::uint32_t leaf_size);
   void moments(const Sources& s, std::uint32_t node);
   std::vector<TreeNode> nodes_;

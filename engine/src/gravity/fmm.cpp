@@ -104,6 +104,7 @@ void FastMultipole::visit(std::uint32_t b, const std::vector<std::uint32_t>& nea
     return;
   }
   for (std::uint32_t ch = nb.child; ch < nb.child + nb.n_child; ++ch) {
+    if (w.live && live_[ch] == 0) continue;  // no sink below: nothing to compute there
     const TreeNode& nc = nodes[ch];
     ex_->l2l(L(b), nc.com[0] - nb.com[0], nc.com[1] - nb.com[1], nc.com[2] - nb.com[2], L(ch));
     // a subtree is left for the parallel pass below kParallelDepth or once it holds 1/64 of the particles
@@ -138,9 +139,26 @@ void FastMultipole::far_field(std::uint32_t b, Walk& w) const {
 }
 
 
-void FastMultipole::walk(const PairLaw& law, const Criterion& c, Result& out) const {
+void FastMultipole::mark_sinks(const std::uint8_t* active) const {
+  const auto& nodes = tree_.nodes();
+  const auto& order = tree_.order();
+  sink_.resize(order.size());
+  for (std::size_t t = 0; t < order.size(); ++t) sink_[t] = active[order[t]] ? 1 : 0;
+  live_.assign(nodes.size(), 0);
+  for (std::size_t b = nodes.size(); b-- > 0;) {  // children come after their parent
+    const TreeNode& nd = nodes[b];
+    if (nd.n_child == 0) {
+      for (std::uint32_t q = nd.first; q < nd.first + nd.count; ++q) live_[b] += sink_[q];
+    } else {
+      for (std::uint32_t ch = nd.child; ch < nd.child + nd.n_child; ++ch) live_[b] += live_[ch];
+    }
+  }
+}
+
+void FastMultipole::walk(const PairLaw& law, const Criterion& c, Result& out, bool sinks_only) const {
   const auto& nodes = tree_.nodes();
   L_.assign(nodes.size() * ex_->size(), 0.0);
+  if (sinks_only && live_[0] == 0) return;
   const double e2 = c.kernel ? 0.0 : law.eps2;
   std::vector<std::pair<std::uint32_t, std::vector<std::uint32_t>>> deferred;
   Walk top;
@@ -149,6 +167,7 @@ void FastMultipole::walk(const PairLaw& law, const Criterion& c, Result& out) co
   top.e2 = e2;
   top.out = &out;
   top.deferred = &deferred;
+  top.live = sinks_only;
   visit(0, {0}, top, 0);  // the top levels, serial; below kParallelDepth the subtrees are deferred
   std::size_t m2l = top.counts.m2l, pairs = top.counts.pairs;
   const auto jobs = static_cast<std::ptrdiff_t>(deferred.size());
@@ -159,6 +178,7 @@ void FastMultipole::walk(const PairLaw& law, const Criterion& c, Result& out) co
     w.crit = &c;
     w.e2 = e2;
     w.out = &out;
+    w.live = sinks_only;
 #pragma omp for schedule(dynamic, 1)
     for (std::ptrdiff_t k = 0; k < jobs; ++k) {
       const auto& job = deferred[static_cast<std::size_t>(k)];
@@ -174,9 +194,10 @@ void FastMultipole::walk(const PairLaw& law, const Criterion& c, Result& out) co
 void FastMultipole::evaluate(const Sources& s, const PairLaw& law, double G, double theta, Result& out,
                              double tol) const {
   const std::size_t n = s.n;
-  out.resize(n);
+  const std::uint8_t* active = out.begin(s) ? s.active : nullptr;
   const auto& nodes = tree_.nodes();
   if (nodes.empty()) return;
+  if (active) mark_sinks(active);
   Criterion c;
   c.order = ex_->order();
   c.inv_theta = theta > 0.0 ? 1.0 / std::min(theta, 1.0) : 1e300;  // theta = 0: every pair summed
@@ -205,8 +226,8 @@ void FastMultipole::evaluate(const Sources& s, const PairLaw& law, double G, dou
     out.node_terms = walked_.node_terms;
     walked_.resize(n);
   }
-  walk(law, c, walked_);
-  add_from_tree_order(walked_, tree_.order(), G, out);
+  walk(law, c, walked_, active != nullptr);  // the guard's estimate walk above: every particle
+  add_from_tree_order(walked_, tree_.order(), G, out, active);
 }
 
 }  // namespace sph::gravity

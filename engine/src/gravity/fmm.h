@@ -43,7 +43,8 @@ class FastMultipole {
   /// Builds the tree of particles 0..s.n-1 and its multipoles.
   void build(const Sources& s, std::uint32_t leaf_size = kLeafSize);
   /// Accelerations and potentials of every particle at opening angle theta (0 < theta <= 1) with the
-  /// relative guard at tolerance tol (0: none).
+  /// relative guard at tolerance tol (0: none). With sinks named (s.active, Result::begin) only theirs:
+  /// sink cells holding none are not walked, and each sink's result has the bits of a full evaluation.
   void evaluate(const Sources& s, const PairLaw& law, double G, double theta, Result& out,
                 double tol = BarnesHutTree::kDefaultTol) const;
 
@@ -65,8 +66,10 @@ class FastMultipole {
   bool separated(const Criterion& c, const TreeNode& a, const TreeNode& b, std::uint32_t node_b) const;
   /// A's multipoles are accurate at every particle of B (M2P: the criterion with r_B = 0 and R - r_B).
   bool reaches_particles(const Criterion& c, const TreeNode& a, const TreeNode& b, std::uint32_t node_b) const;
-  /// One walk for every particle, results per unit G in tree order.
-  void walk(const PairLaw& law, const Criterion& c, Result& out) const;
+  /// One walk for every particle (for the sinks only: sinks_only, live_), results per unit G in tree order.
+  void walk(const PairLaw& law, const Criterion& c, Result& out, bool sinks_only = false) const;
+  /// sink_ and live_ from the flags of s.active (storage order).
+  void mark_sinks(const std::uint8_t* active) const;
   /// Sink node b: M2L from the cells of `near` it is separated from; passes the rest to its children
   /// (internal) or sums them pair by pair (leaf).
   void visit(std::uint32_t b, const std::vector<std::uint32_t>& near, Walk& w, std::size_t depth) const;
@@ -86,6 +89,8 @@ class FastMultipole {
   mutable std::vector<double> L_;          ///< local expansions, size() per node
   mutable std::vector<double> amin_;       ///< smallest |a| estimate per node (the guard)
   mutable Result walked_;
+  mutable std::vector<std::uint8_t> sink_;   ///< 1 for a sink, in tree order (individual time steps)
+  mutable std::vector<std::uint32_t> live_;  ///< sinks per node
 };
 
 }  // namespace sph::gravity

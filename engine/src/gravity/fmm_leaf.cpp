@@ -36,12 +36,32 @@ void p2p_plummer(std::ptrdiff_t cnt, const double* __restrict x, const double* _
 void FastMultipole::leaf(std::uint32_t b, const std::vector<std::uint32_t>& near, Walk& w) const {
   const auto& nodes = tree_.nodes();
   const TreeNode& nb = nodes[b];
-  const std::size_t first = nb.first, cnt = nb.count;
+  const std::size_t first = nb.first, count = nb.count;
+  // the sinks: every particle of the leaf, or (individual time steps) its active ones, gathered; each
+  // sink's sums are the same either way
+  const bool some = w.live && live_[b] < count;
+  std::size_t cnt = count;
+  const double *x = tx()[0].data() + first, *y = tx()[1].data() + first, *z = tx()[2].data() + first;
+  if (some) {
+    w.slot.clear();
+    w.local.assign(count, -1);
+    for (std::size_t i = 0; i < count; ++i)
+      if (sink_[first + i]) {
+        w.local[i] = static_cast<std::ptrdiff_t>(w.slot.size());
+        w.slot.push_back(static_cast<std::uint32_t>(i));
+      }
+    cnt = w.slot.size();
+    for (int k = 0; k < 3; ++k) {
+      w.sx[k].resize(cnt);
+      for (std::size_t i = 0; i < cnt; ++i) w.sx[k][i] = tx()[k][first + w.slot[i]];
+    }
+    x = w.sx[0].data(), y = w.sx[1].data(), z = w.sx[2].data();
+  }
+  const auto tree_slot = [&](std::size_t i) { return first + (some ? w.slot[i] : i); };
   for (auto* v : {&w.ax, &w.ay, &w.az, &w.phi, &w.mmax}) v->assign(cnt, 0.0);
   w.re2.assign(cnt, 1e300);
   double *ax = w.ax.data(), *ay = w.ay.data(), *az = w.az.data(), *ph = w.phi.data(), *re2 = w.re2.data(),
          *mmax = w.mmax.data();
-  const double *x = tx()[0].data() + first, *y = tx()[1].data() + first, *z = tx()[2].data() + first;
   const PairLaw& law = *w.law;
   const bool plummer = law.kind == Softening::Plummer;
   const double e2 = law.eps2;
@@ -50,13 +70,15 @@ void FastMultipole::leaf(std::uint32_t b, const std::vector<std::uint32_t>& near
     for (std::size_t j = na.first; j < na.first + na.count; ++j) {
       const double xj = tx()[0][j], yj = tx()[1][j], zj = tx()[2][j], mj = tm()[j], hj = th()[j];
       if (plummer) {
-        const std::ptrdiff_t self = j >= first && j < first + cnt ? static_cast<std::ptrdiff_t>(j - first) : -1;
+        std::ptrdiff_t self = j >= first && j < first + count ? static_cast<std::ptrdiff_t>(j - first) : -1;
+        if (some && self >= 0) self = w.local[static_cast<std::size_t>(self)];
         p2p_plummer(static_cast<std::ptrdiff_t>(cnt), x, y, z, xj, yj, zj, mj, e2, self, ax, ay, az, ph, re2, mmax);
       } else {
         for (std::size_t i = 0; i < cnt; ++i) {
-          if (first + i == j) continue;
+          const std::size_t ti = tree_slot(i);
+          if (ti == j) continue;
           const double dx = x[i] - xj, dy = y[i] - yj, dz = z[i] - zj, r2 = dx * dx + dy * dy + dz * dz;
-          const double hi = th()[first + i];
+          const double hi = th()[ti];
           double f, p;
           law(r2, hi, hj, f, p);
           ax[i] -= mj * f * dx;
@@ -80,7 +102,7 @@ void FastMultipole::leaf(std::uint32_t b, const std::vector<std::uint32_t>& near
   for (std::size_t i = 0; i < cnt; ++i) {
     double p = ph[i], gx = ax[i], gy = ay[i], gz = az[i];
     ex_->l2p(L(b), x[i] - nb.com[0], y[i] - nb.com[1], z[i] - nb.com[2], p, gx, gy, gz);
-    const std::size_t t = first + i;
+    const std::size_t t = tree_slot(i);
     out.a[0][t] = gx;
     out.a[1][t] = gy;
     out.a[2][t] = gz;

@@ -1,5 +1,7 @@
 // The state of one thread's walk of the fast multipole method (gravity/fmm.cpp, fmm_leaf.cpp).
 #pragma once
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -21,6 +23,11 @@ struct FastMultipole::Walk {
   std::vector<std::uint32_t> far;                  ///< the cells a sink takes as multipoles, in list order
   std::vector<std::uint32_t> direct;               ///< the cells a sink leaf's particles take one by one
   std::vector<double> ax, ay, az, phi, re2, mmax;  ///< a leaf's sums
+  /// Only the sinks (FastMultipole::live_, sink_): subtrees without one are skipped, a leaf's sinks gathered.
+  bool live = false;
+  std::vector<std::uint32_t> slot;       ///< a leaf's sinks: their index in the leaf
+  std::vector<std::ptrdiff_t> local;     ///< a leaf particle's index among its sinks, -1 if none
+  std::array<std::vector<double>, 3> sx;  ///< the sinks' positions
   Counts counts;
   /// Subtrees left for the parallel pass: their root and its list.
   std::vector<std::pair<std::uint32_t, std::vector<std::uint32_t>>>* deferred = nullptr;

@@ -31,17 +31,42 @@ class SelfGravity final : public Stage {
         type_(type) {}
   bool uses_neighbours() const override { return false; }
 
+  // With individual time steps only the active particles are sinks: the others are drifted, keep the
+  // accelerations of their last evaluation (the integrator restores them) and their potentials. The
+  // potential energy of such a state is then carried from the last full evaluation by the work of the
+  // accelerations the integrator uses, dE_pot = -sum m_i g_i . dx_i (trapezoidal in g over each
+  // sub-step); summing the mixed potentials instead was off by up to 0.2 of the energy scale in evrard.
   bool run(StageContext& c) override {
     Particles& p = c.p;
-    solve(c, p, out_);
     const std::size_t n = p.fluid();
+    const bool some = c.active && c.active->size() < n;
+    if (some) {
+      sinks_.assign(n, 0);
+      for (std::uint32_t i : *c.active) sinks_[i] = 1;
+    }
+    const bool carry = some && e_pot_known_ && x_eval_[0].size() == n && out_.a[0].size() == n;
+    const double work_before = carry ? work(p) : 0.0;
+    solve(c, p, out_, some ? sinks_.data() : nullptr);
+    if (carry) {
+      e_pot_ -= 0.5 * (work_before + work(p));
+    } else if (some) {
+      e_pot_known_ = false;  // potential() solves again
+    } else {
+      const auto& m = p[Field::Mass];
+      e_pot_ = 0.0;  // serial: the same for any thread count
+      for (std::size_t i = 0; i < n; ++i) e_pot_ += 0.5 * m[i] * out_.phi[i];
+      e_pot_known_ = true;
+    }
+    const std::size_t rows = c.rows(n);
     for (int k = 0; k < 3; ++k) {
       auto& a = p.a[k];
       const auto& g = out_.a[k];
-#pragma omp parallel for schedule(static) if (n >= kParallelMin)
-      for (std::size_t i = 0; i < n; ++i) a[i] += g[i];
+#pragma omp parallel for schedule(static) if (rows >= kParallelMin)
+      for (std::size_t r = 0; r < rows; ++r) a[c.row(r)] += g[c.row(r)];
     }
     std::copy(out_.phi.begin(), out_.phi.end(), p[Field::Potential].begin());
+    // the state out_ belongs to; inside a block of individual steps the inactive particles' potentials
+    // are those of their last evaluation (potential() sums them; the block's end evaluates every one)
     for (int k = 0; k < 3; ++k) x_eval_[k].assign(p.x[k].begin(), p.x[k].begin() + static_cast<std::ptrdiff_t>(n));
     return true;
   }
@@ -77,38 +102,64 @@ class SelfGravity final : public Stage {
     }
   }
 
-  // the last evaluation's accelerations, potentials and pair times (dt_limit reads them) and positions
+  // the last evaluation's accelerations, potentials and pair times (dt_limit reads them), positions, and
+  // the potential energy with whether it is known
   std::vector<std::vector<double>> saved_state() const override {
-    return {out_.a[0], out_.a[1], out_.a[2], out_.phi, out_.t2_pair, x_eval_[0], x_eval_[1], x_eval_[2]};
+    return {out_.a[0], out_.a[1], out_.a[2], out_.phi, out_.t2_pair, x_eval_[0], x_eval_[1], x_eval_[2],
+            {e_pot_, e_pot_known_ ? 1.0 : 0.0}};
   }
   bool restore_state(const std::vector<std::vector<double>>& s) override {
-    if (s.size() != 8) return false;
+    if (s.size() != 9 || s[8].size() != 2) return false;
     for (int k = 0; k < 3; ++k) {
       out_.a[k] = s[k];
       x_eval_[k] = s[5 + k];
     }
     out_.phi = s[3];
     out_.t2_pair = s[4];
+    e_pot_ = s[8][0];
+    e_pot_known_ = s[8][1] != 0.0;
     return true;
+  }
+
+  // the kept values follow the particles (the inactive ones' are read until they are active again)
+  void permute(std::span<const std::uint32_t> order) override {
+    std::vector<double> old;
+    auto follow = [&](std::vector<double>& v) {
+      if (v.empty() || v.size() > order.size()) return;
+      old = v;
+      for (std::size_t k = 0; k < v.size(); ++k) v[k] = old[order[k]];
+    };
+    for (int k = 0; k < 3; ++k) {
+      follow(out_.a[k]);
+      follow(x_eval_[k]);
+    }
+    follow(out_.phi);
+    follow(out_.t2_pair);
   }
 
   double potential(const StageContext& c) const override {
     const Particles& p = c.p;
     const std::size_t n = p.fluid();
     const auto& m = p[Field::Mass];
-    const std::vector<double>* phi = &out_.phi;
-    if (!evaluated_at(p)) {  // the last evaluation was at another state (an RK4 sub-step)
-      solve(c, p, scratch_);
-      phi = &scratch_.phi;
-    }
+    if (evaluated_at(p) && e_pot_known_) return e_pot_;
+    solve(c, p, scratch_);  // the last evaluation was at another state (an RK4 sub-step)
     double e = 0.0;  // serial: the same for any thread count
-    for (std::size_t i = 0; i < n; ++i) e += 0.5 * m[i] * (*phi)[i];
+    for (std::size_t i = 0; i < n; ++i) e += 0.5 * m[i] * scratch_.phi[i];
     return e;
   }
 
  private:
-  /// Accelerations and potentials for the current positions.
-  void solve(const StageContext& c, const Particles& p, gravity::Result& out) const {
+  /// sum_i m_i g_i . (x_i - x_i at the last evaluation), g the accelerations out_ holds (serial).
+  double work(const Particles& p) const {
+    const auto& m = p[Field::Mass];
+    double w = 0.0;
+    for (std::size_t i = 0; i < p.fluid(); ++i)
+      for (int k = 0; k < p.dim(); ++k) w += m[i] * out_.a[k][i] * (p.x[k][i] - x_eval_[k][i]);
+    return w;
+  }
+  /// Accelerations and potentials for the current positions: of every particle, or of the sinks flagged
+  /// in `sinks` (out keeping the others').
+  void solve(const StageContext& c, const Particles& p, gravity::Result& out, const std::uint8_t* sinks = nullptr) const {
     const GravityParams& g = c.prm.gravity;
     gravity::PairLaw law;
     law.kind = g.softening;
@@ -120,7 +171,8 @@ class SelfGravity final : public Stage {
       }
       law.kernel = &*kernel_;
     }
-    const gravity::Sources s = gravity::Sources::of(p);
+    gravity::Sources s = gravity::Sources::of(p);
+    s.active = sinks;
     if (type_ == GravityType::Direct) {
       gravity::direct_sum(s, law, g.G, out);
     } else if (type_ == GravityType::Fmm) {
@@ -142,6 +194,9 @@ class SelfGravity final : public Stage {
   GravityType type_;
   gravity::Result out_;
   std::array<std::vector<double>, 3> x_eval_;  ///< positions of the last evaluation
+  std::vector<std::uint8_t> sinks_;            ///< the active particles' flags (individual time steps)
+  double e_pot_ = 0.0;                         ///< the potential energy at x_eval_ (run())
+  bool e_pot_known_ = false;
   // caches of const methods (diagnostics run on the thread that steps)
   mutable gravity::Result scratch_;
   mutable gravity::BarnesHutTree tree_;

@@ -50,6 +50,7 @@ void World::reorder() {
   integrator_->permute(order);
   if (block_) block_->permute(order);
   lists_.permute(order);  // the lists stay valid for the current state
+  for (const auto& s : pipeline_->stages()) s->permute(order);
   by_id_.resize(n);
   for (std::size_t i = 0; i < n; ++i) by_id_[i] = static_cast<std::uint32_t>(i);
   std::sort(by_id_.begin(), by_id_.end(), [&](std::uint32_t a, std::uint32_t b) { return p_.id[a] < p_.id[b]; });
