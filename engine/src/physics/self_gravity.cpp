@@ -125,7 +125,11 @@ class SelfGravity final : public Stage {
   void permute(std::span<const std::uint32_t> order) override {
     std::vector<double> old;
     auto follow = [&](std::vector<double>& v) {
-      if (v.empty() || v.size() > order.size()) return;
+      for (std::size_t k = 0; k < v.size(); ++k)
+        if (k >= order.size() || order[k] >= v.size()) {  // another set of particles: nothing to keep
+          v.clear();
+          return;
+        }
       old = v;
       for (std::size_t k = 0; k < v.size(); ++k) v[k] = old[order[k]];
     };
