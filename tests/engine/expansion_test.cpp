@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 #include "gravity_test_util.h"
@@ -138,6 +139,27 @@ TEST(Expansion, FourLaneM2LIsTheSumOfFourSingleOnes) {
     for (std::size_t c = 0; c < ex->size(); ++c) EXPECT_NEAR(L4[c], L1[c], 1e-13 * std::abs(L1[c]) + 1e-300);
   }
   EXPECT_THROW(make_expansion(Expansion::kMaxOrder + 1), std::invalid_argument);
+}
+
+TEST(Expansion, FourLaneM2PHasTheBitsOfFourSingleOnes) {
+  for (int P = Expansion::kMinOrder; P <= Expansion::kMaxOrder; ++P) {
+    const auto ex = make_expansion(P);
+    const Cluster k = cluster(10, 0.1, {0, 0, 0}, 5);
+    const std::vector<double> M = moments(*ex, k, k.com);
+    double R[4][3], phi4[4] = {0.5, 0.5, 0.5, 0.5}, a4[3][4] = {}, phi1[4] = {0.5, 0.5, 0.5, 0.5}, a1[3][4] = {};
+    for (int v = 0; v < 4; ++v) {
+      R[v][0] = 0.9 + 0.1 * v;
+      R[v][1] = 0.3 - 0.2 * v;
+      R[v][2] = 0.1 * v - 0.05;
+      ex->m2p(M.data(), R[v][0], R[v][1], R[v][2], 1e-4, phi1[v], a1[0][v], a1[1][v], a1[2][v]);
+    }
+    ex->m2p4(M.data(), R, 1e-4, phi4, a4[0], a4[1], a4[2]);
+    for (int v = 0; v < 4; ++v) {
+      EXPECT_EQ(0, std::memcmp(&phi4[v], &phi1[v], sizeof(double))) << "P = " << P << ", lane " << v;
+      for (int c = 0; c < 3; ++c) EXPECT_EQ(0, std::memcmp(&a4[c][v], &a1[c][v], sizeof(double))) << "P = " << P;
+    }
+    EXPECT_NE(phi1[0], 0.5);
+  }
 }
 
 }  // namespace

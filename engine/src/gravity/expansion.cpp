@@ -144,24 +144,8 @@ class ExpansionOf final : public Expansion {
     for (int c = 0; c < N; ++c) L[c] += l[c];
   }
   void m2l4(const double* const M[4], const double R[4][3], double e2, double* L) const override {
-    double a[N][4], m[N][4], l[N][4] = {}, inv_s[4];
-    for (int v = 0; v < 4; ++v) {
-      inv_s[v] = 1.0 / (R[v][0] * R[v][0] + R[v][1] * R[v][1] + R[v][2] * R[v][2] + e2);
-      a[0][v] = std::sqrt(inv_s[v]);
-    }
-#pragma GCC unroll 128
-    for (int c = 1; c < N; ++c) {  // the recurrence of coefficients(), lane by lane
-      const auto& d = T::down[c];
-      double first[4] = {}, second[4] = {};
-#pragma GCC unroll 3
-      for (int k = 0; k < 3; ++k) {
-        if (d.d1[k] >= 0)
-          for (int v = 0; v < 4; ++v) first[v] += R[v][k] * a[d.d1[k]][v];
-        if (d.d2[k] >= 0)
-          for (int v = 0; v < 4; ++v) second[v] += a[d.d2[k]][v];
-      }
-      for (int v = 0; v < 4; ++v) a[c][v] = -(d.f1 * first[v] + d.f2 * second[v]) * inv_s[v];
-    }
+    double a[N][4], m[N][4], l[N][4] = {};
+    lane_coefficients(R, e2, a);
     for (int c = 0; c < N; ++c)
       for (int v = 0; v < 4; ++v) m[c][v] = M[v][c];
 #pragma GCC unroll 2048
@@ -208,8 +192,46 @@ class ExpansionOf final : public Expansion {
     ay += L[2];
     az += L[3];
   }
+  void m2p4(const double* M, const double R[4][3], double e2, double* phi, double* ax, double* ay,
+            double* az) const override {
+    double a[N][4], l[4][4] = {};
+    lane_coefficients(R, e2, a);
+#pragma GCC unroll 2048
+    for (int t = 0; t < T::kM2L; ++t) {  // the terms of L_0 and L_(e_c) only, as m2p
+      const Term& u = T::m2l[t];
+      if (u.out < 4)
+        for (int v = 0; v < 4; ++v) l[u.out][v] += u.coef * a[u.pw][v] * M[u.in];
+    }
+    for (int v = 0; v < 4; ++v) {
+      phi[v] -= l[0][v];
+      ax[v] += l[1][v];
+      ay[v] += l[2][v];
+      az[v] += l[3][v];
+    }
+  }
 
  private:
+  /// coefficients() at four offsets, lane by lane (the same operations in the same order per lane).
+  static void lane_coefficients(const double R[4][3], double e2, double a[N][4]) {
+    double inv_s[4];
+    for (int v = 0; v < 4; ++v) {
+      inv_s[v] = 1.0 / (R[v][0] * R[v][0] + R[v][1] * R[v][1] + R[v][2] * R[v][2] + e2);
+      a[0][v] = std::sqrt(inv_s[v]);
+    }
+#pragma GCC unroll 128
+    for (int c = 1; c < N; ++c) {
+      const auto& d = T::down[c];
+      double first[4] = {}, second[4] = {};
+#pragma GCC unroll 3
+      for (int k = 0; k < 3; ++k) {
+        if (d.d1[k] >= 0)
+          for (int v = 0; v < 4; ++v) first[v] += R[v][k] * a[d.d1[k]][v];
+        if (d.d2[k] >= 0)
+          for (int v = 0; v < 4; ++v) second[v] += a[d.d2[k]][v];
+      }
+      for (int v = 0; v < 4; ++v) a[c][v] = -(d.f1 * first[v] + d.f2 * second[v]) * inv_s[v];
+    }
+  }
   static void powers(double x, double y, double z, double* pw) {
     double px[P + 1], py[P + 1], pz[P + 1];
     px[0] = py[0] = pz[0] = 1.0;

@@ -47,6 +47,10 @@ class Expansion {
   /// Adds the multipoles' potential and acceleration at R from their centre (per unit G) to phi and a.
   virtual void m2p(const double* M, double rx, double ry, double rz, double e2, double& phi, double& ax,
                    double& ay, double& az) const = 0;
+  /// m2p at four offsets R[v] at once (lanes v = 0..3 into phi[v], a*[v]): each lane the same operations
+  /// in the same order as m2p, so the same bits.
+  virtual void m2p4(const double* M, const double R[4][3], double e2, double* phi, double* ax, double* ay,
+                    double* az) const = 0;
 };
 
 /// The expansion of order P in [kMinOrder, kMaxOrder]; std::invalid_argument beyond.

@@ -92,9 +92,19 @@ void FastMultipole::leaf(std::uint32_t b, const std::vector<std::uint32_t>& near
     }
     w.counts.pairs += na.count * cnt;
   }
-  for (const std::uint32_t a : w.direct) {
+  for (const std::uint32_t a : w.direct) {  // four sinks at a time (the same bits as one by one)
     const TreeNode& na = nodes[a];
-    for (std::size_t i = 0; i < cnt; ++i)
+    std::size_t i = 0;
+    for (; i + 4 <= cnt; i += 4) {
+      double R[4][3];
+      for (std::size_t v = 0; v < 4; ++v) {
+        R[v][0] = x[i + v] - na.com[0];
+        R[v][1] = y[i + v] - na.com[1];
+        R[v][2] = z[i + v] - na.com[2];
+      }
+      ex_->m2p4(M(a), R, w.e2, ph + i, ax + i, ay + i, az + i);
+    }
+    for (; i < cnt; ++i)
       ex_->m2p(M(a), x[i] - na.com[0], y[i] - na.com[1], z[i] - na.com[2], w.e2, ph[i], ax[i], ay[i], az[i]);
     w.counts.m2l += cnt;
   }
