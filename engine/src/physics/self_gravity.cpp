@@ -5,6 +5,7 @@
 // Timestep limits: sqrt(eps / |a|) for Plummer softening (the world applies sqrt(h/|a|) to h > 0), and
 // the shortest two-body dynamical time sqrt(r^3 / (G (m_i + m_j))) over the pairs summed one by one,
 // which resolves close encounters and orbits of point masses (a fraction of it, by the Courant factor).
+// With individual time steps only the active particles are evaluated (gravity/sources.h: Sources::active).
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -66,7 +67,7 @@ class SelfGravity final : public Stage {
     }
     std::copy(out_.phi.begin(), out_.phi.end(), p[Field::Potential].begin());
     // the state out_ belongs to; inside a block of individual steps the inactive particles' potentials
-    // are those of their last evaluation (potential() sums them; the block's end evaluates every one)
+    // (the field phi) are those of their last evaluation; the block's end evaluates every particle
     for (int k = 0; k < 3; ++k) x_eval_[k].assign(p.x[k].begin(), p.x[k].begin() + static_cast<std::ptrdiff_t>(n));
     return true;
   }
